@@ -1,0 +1,29 @@
+#pragma once
+// Each subcommand lives in its own file and registers itself here with a static
+// CommandRegistrar; main() only parses and dispatches. Exit codes: 0 done, 1 not solved,
+// 2 bad input (an InputError or a CLI parse error), 3 internal error.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace pmdplan::cli {
+
+/// Called once with the subcommand to declare its options; returns the action run after parsing.
+using CommandSetup = std::function<std::function<int()>(CLI::App& command)>;
+
+struct CommandEntry {
+  std::string name;
+  std::string description;
+  CommandSetup setup;
+};
+
+std::vector<CommandEntry>& commandRegistry();
+
+struct CommandRegistrar {
+  CommandRegistrar(std::string name, std::string description, CommandSetup setup) {
+    commandRegistry().push_back({std::move(name), std::move(description), std::move(setup)});
+  }
+};
+
+}  // namespace pmdplan::cli

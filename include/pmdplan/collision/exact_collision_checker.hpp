@@ -1,0 +1,52 @@
+#pragma once
+// The exact reference checker on FCL: self-collision over the enabled link pairs and collision of
+// every link with the task's static obstacles. Primitives use FCL's analytic routines or its
+// independent GJK (GST_INDEP; the libccd default gives wrong box-capsule and box-box answers in
+// FCL 0.7); meshes are triangle surfaces.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pmdplan/collision/collision_report.hpp"
+#include "pmdplan/collision/state_validator.hpp"
+#include "pmdplan/model/forward_kinematics.hpp"
+#include "pmdplan/world/task.hpp"
+
+namespace pmdplan {
+
+class ExactCollisionChecker : public StateValidator {
+public:
+  /// The robot, its base pose and the obstacles of `task` (kept by reference: outlive the checker).
+  explicit ExactCollisionChecker(const Task& task);
+  ~ExactCollisionChecker() override;
+  ExactCollisionChecker(const ExactCollisionChecker&) = delete;
+  ExactCollisionChecker& operator=(const ExactCollisionChecker&) = delete;
+
+  bool isValid(const Configuration& q) override;
+  bool isArmValid(const Configuration& q) override;
+  std::size_t checkCount() const override { return checks_; }
+
+  /// Every colliding pair (self and environment), not just the first.
+  CollisionReport check(const Configuration& q);
+  /// Smallest distance between any of `links` and the obstacle `obstacleName` (negative or zero
+  /// when they touch). Throws std::invalid_argument for unknown names.
+  double distanceToObstacle(const Configuration& q, const std::vector<int>& links, const std::string& obstacleName);
+
+  const RobotModel& model() const { return model_; }
+  const ForwardKinematics& kinematics() const { return kinematics_; }
+
+private:
+  struct Geometry;
+  bool selfCollides(const LinkPoses& poses, bool armOnly, CollisionReport* report) const;
+  bool environmentCollides(const LinkPoses& poses, CollisionReport* report) const;
+
+  const Task& task_;
+  const RobotModel& model_;
+  ForwardKinematics kinematics_;
+  std::unique_ptr<Geometry> geometry_;
+  std::vector<char> armLink_;
+  LinkPoses poses_;
+  std::size_t checks_ = 0;
+};
+
+}  // namespace pmdplan

@@ -1,0 +1,25 @@
+#pragma once
+// Where Algorithm 2 (SampleHand) draws hand configurations from. The PMD planner and the
+// full-space baseline differ only in the HandSampler they use.
+#include <string>
+
+#include "pmdplan/model/configuration.hpp"
+#include "pmdplan/core/random_source.hpp"
+
+namespace pmdplan {
+
+class HandSampler {
+public:
+  virtual ~HandSampler() = default;
+  /// Active dimension Algorithm 4 starts every arm configuration with (dimSch = 2 for the paper).
+  virtual int initialDimension() const = 0;
+  /// Largest active dimension; failed hand samples grow the dimension up to this.
+  virtual int maxDimension() const = 0;
+  /// Writes the hand entries of `q` (arm entries untouched) with a sample of the box of the first
+  /// `dimension` axes; dimension is clamped to [initialDimension, maxDimension].
+  virtual void sample(int dimension, RandomSource& random, Configuration& q) const = 0;
+  /// Short name for outputs: "pmd" or "full".
+  virtual std::string name() const = 0;
+};
+
+}  // namespace pmdplan

@@ -1,0 +1,12 @@
+#pragma once
+// The planning space of a robot model: its active joints and its "arm" and "hand" groups.
+#include "pmdplan/model/robot_model.hpp"
+#include "pmdplan/planning/planning_space.hpp"
+
+namespace pmdplan {
+
+/// Throws InputError naming the robot's file and "groups" if the model lacks an "arm" or "hand"
+/// group or the groups do not split the active joints.
+PlanningSpace planningSpaceFromRobot(const RobotModel& model);
+
+}  // namespace pmdplan

@@ -1,0 +1,45 @@
+#pragma once
+// A planning task: the robot and where it stands, the static obstacles, start and goal.
+// Read from the task YAML schema of data/scenes/*.yaml (see docs in README).
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pmdplan/model/collision_shape.hpp"
+#include "pmdplan/model/configuration.hpp"
+#include "pmdplan/model/robot_model.hpp"
+
+namespace pmdplan {
+
+struct Obstacle {
+  std::string name;
+  Shape shape;                                               ///< mesh paths resolved to absolute
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();    ///< in the world frame
+};
+
+struct Task {
+  std::filesystem::path file;   ///< where it was read from (empty if built in code)
+  std::string name;
+  std::string description;
+  std::shared_ptr<const RobotModel> robot;
+  Eigen::Isometry3d base = Eigen::Isometry3d::Identity();  ///< robot root link in the world
+  std::optional<std::string> target;                       ///< name of an obstacle the goal grasps
+  std::vector<Obstacle> obstacles;
+  Configuration start;
+  Configuration goal;
+
+  const Obstacle* findObstacle(const std::string& obstacleName) const;
+};
+
+/// Reads and validates a task file. Every problem is an InputError naming the file and the key:
+/// unknown keys, missing or duplicated joints, values outside the limits, NaN, unknown obstacle
+/// types, missing mesh files, an unloadable robot.
+Task loadTask(const std::filesystem::path& file);
+
+/// A built-in task name (data/scenes/<name>.yaml) or a path.
+Task loadTaskByName(const std::string& nameOrPath);
+
+}  // namespace pmdplan

@@ -1,0 +1,182 @@
+#include "pmdplan/collision/exact_collision_checker.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+#include "fcl_geometry.hpp"
+
+namespace pmdplan {
+
+struct PlacedGeometry {
+  std::shared_ptr<fcl::CollisionGeometryd> geometry;
+  Eigen::Isometry3d pose;  ///< in the link frame (robot) or the world (obstacles)
+  double radius = 0.0;     ///< encloses the geometry around pose.translation()
+};
+
+struct ExactCollisionChecker::Geometry {
+  std::vector<std::vector<PlacedGeometry>> links;  ///< per link
+  std::vector<double> linkRadius;                 ///< about the link origin
+  std::vector<std::pair<int, int>> selfPairs;      ///< enabled link pairs that both have geometry
+  std::vector<PlacedGeometry> obstacles;
+  fcl::CollisionRequestd request;
+  fcl::DistanceRequestd distanceRequest;
+};
+
+namespace {
+
+bool spheresApart(const Eigen::Vector3d& a, double ra, const Eigen::Vector3d& b, double rb) {
+  return (a - b).squaredNorm() > (ra + rb) * (ra + rb);
+}
+
+bool shapesCollide(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, const PlacedGeometry& b,
+                   const Eigen::Isometry3d& poseB, const fcl::CollisionRequestd& request) {
+  if (spheresApart(poseA.translation(), a.radius, poseB.translation(), b.radius)) return false;
+  fcl::CollisionResultd result;
+  fcl::collide(a.geometry.get(), poseA, b.geometry.get(), poseB, request, result);
+  return result.isCollision();
+}
+
+}  // namespace
+
+ExactCollisionChecker::ExactCollisionChecker(const Task& task)
+    : task_(task), model_(*task.robot), kinematics_(*task.robot, task.base), geometry_(std::make_unique<Geometry>()) {
+  auto& g = *geometry_;
+  g.request.gjk_solver_type = fcl::GST_INDEP;
+  g.request.num_max_contacts = 1;
+  g.distanceRequest.gjk_solver_type = fcl::GST_INDEP;
+  g.distanceRequest.enable_nearest_points = false;
+
+  const auto& links = model_.links();
+  g.links.resize(links.size());
+  g.linkRadius.assign(links.size(), 0.0);
+  for (std::size_t l = 0; l < links.size(); ++l) {
+    for (const auto& placed : links[l].collisionShapes) {
+      auto geometry = makeFclGeometry(placed.shape);
+      const double r = enclosingRadius(placed.shape, *geometry);
+      g.links[l].push_back({geometry, placed.pose, r});
+      g.linkRadius[l] = std::max(g.linkRadius[l], placed.pose.translation().norm() + r);
+    }
+  }
+  for (std::size_t a = 0; a < links.size(); ++a)
+    for (std::size_t b = a + 1; b < links.size(); ++b)
+      if (!g.links[a].empty() && !g.links[b].empty() &&
+          !model_.isCollisionPairDisabled(static_cast<int>(a), static_cast<int>(b)))
+        g.selfPairs.emplace_back(static_cast<int>(a), static_cast<int>(b));
+  for (const auto& obstacle : task.obstacles) {
+    auto geometry = makeFclGeometry(obstacle.shape);
+    g.obstacles.push_back({geometry, obstacle.pose, enclosingRadius(obstacle.shape, *geometry)});
+  }
+
+  // Links whose pose depends on arm joints only (the hand's palm included): Algorithm 1's arm check.
+  std::vector<char> armJoint(model_.joints().size(), 0);
+  if (model_.hasGroup("arm"))
+    for (std::size_t j = 0; j < model_.joints().size(); ++j) {
+      const auto& joint = model_.joints()[j];
+      const auto& arm = model_.group("arm");
+      armJoint[j] = joint.type == JointType::Fixed ||
+                    (joint.activeIndex >= 0 && std::find(arm.begin(), arm.end(), joint.activeIndex) != arm.end());
+    }
+  armLink_.assign(links.size(), 0);
+  armLink_[static_cast<std::size_t>(model_.rootLink())] = 1;
+  for (int j : model_.jointOrder()) {
+    const auto& joint = model_.joints()[static_cast<std::size_t>(j)];
+    armLink_[static_cast<std::size_t>(joint.childLink)] =
+        armLink_[static_cast<std::size_t>(joint.parentLink)] && armJoint[static_cast<std::size_t>(j)];
+  }
+}
+
+ExactCollisionChecker::~ExactCollisionChecker() = default;
+
+bool ExactCollisionChecker::selfCollides(const LinkPoses& poses, bool armOnly, CollisionReport* report) const {
+  const auto& g = *geometry_;
+  bool collides = false;
+  for (auto [a, b] : g.selfPairs) {
+    if (armOnly && !(armLink_[static_cast<std::size_t>(a)] && armLink_[static_cast<std::size_t>(b)])) continue;
+    const auto& pa = poses[static_cast<std::size_t>(a)];
+    const auto& pb = poses[static_cast<std::size_t>(b)];
+    if (spheresApart(pa.translation(), g.linkRadius[static_cast<std::size_t>(a)], pb.translation(),
+                     g.linkRadius[static_cast<std::size_t>(b)]))
+      continue;
+    bool pairCollides = false;
+    for (const auto& sa : g.links[static_cast<std::size_t>(a)]) {
+      for (const auto& sb : g.links[static_cast<std::size_t>(b)])
+        if (shapesCollide(sa, pa * sa.pose, sb, pb * sb.pose, g.request)) {
+          pairCollides = true;
+          break;
+        }
+      if (pairCollides) break;
+    }
+    if (!pairCollides) continue;
+    collides = true;
+    if (!report) return true;
+    report->pairs.emplace_back(model_.links()[static_cast<std::size_t>(a)].name, model_.links()[static_cast<std::size_t>(b)].name);
+  }
+  return collides;
+}
+
+bool ExactCollisionChecker::environmentCollides(const LinkPoses& poses, CollisionReport* report) const {
+  const auto& g = *geometry_;
+  bool collides = false;
+  for (std::size_t l = 0; l < g.links.size(); ++l) {
+    if (g.links[l].empty()) continue;
+    const auto& pose = poses[l];
+    for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
+      const auto& obstacle = g.obstacles[o];
+      if (spheresApart(pose.translation(), g.linkRadius[l], obstacle.pose.translation(), obstacle.radius)) continue;
+      const bool hit = std::any_of(g.links[l].begin(), g.links[l].end(), [&](const PlacedGeometry& shape) {
+        return shapesCollide(shape, pose * shape.pose, obstacle, obstacle.pose, g.request);
+      });
+      if (!hit) continue;
+      collides = true;
+      if (!report) return true;
+      report->pairs.emplace_back(model_.links()[l].name, task_.obstacles[o].name);
+    }
+  }
+  return collides;
+}
+
+bool ExactCollisionChecker::isValid(const Configuration& q) {
+  ++checks_;
+  kinematics_.linkPoses(q, poses_);
+  return !selfCollides(poses_, false, nullptr) && !environmentCollides(poses_, nullptr);
+}
+
+bool ExactCollisionChecker::isArmValid(const Configuration& q) {
+  ++checks_;
+  kinematics_.linkPoses(q, poses_);
+  return !selfCollides(poses_, true, nullptr);
+}
+
+CollisionReport ExactCollisionChecker::check(const Configuration& q) {
+  ++checks_;
+  kinematics_.linkPoses(q, poses_);
+  CollisionReport report;
+  selfCollides(poses_, false, &report);
+  environmentCollides(poses_, &report);
+  std::sort(report.pairs.begin(), report.pairs.end());
+  return report;
+}
+
+double ExactCollisionChecker::distanceToObstacle(const Configuration& q, const std::vector<int>& links,
+                                                 const std::string& obstacleName) {
+  const auto& g = *geometry_;
+  std::size_t o = 0;
+  while (o < task_.obstacles.size() && task_.obstacles[o].name != obstacleName) ++o;
+  if (o == task_.obstacles.size()) throw std::invalid_argument("no obstacle named '" + obstacleName + "'");
+  kinematics_.linkPoses(q, poses_);
+  double best = std::numeric_limits<double>::infinity();
+  for (int l : links) {
+    if (l < 0 || static_cast<std::size_t>(l) >= g.links.size()) throw std::invalid_argument("link index out of range");
+    for (const auto& shape : g.links[static_cast<std::size_t>(l)]) {
+      fcl::DistanceResultd result;
+      fcl::distance(shape.geometry.get(), poses_[static_cast<std::size_t>(l)] * shape.pose, g.obstacles[o].geometry.get(),
+                    g.obstacles[o].pose, g.distanceRequest, result);
+      best = std::min(best, result.min_distance);
+    }
+  }
+  return best;
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,89 @@
+#include "pmdplan/planning/path_smoothing.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace pmdplan {
+namespace {
+
+enum class EdgeState : char { Unknown, Free, Blocked };
+
+/// Dijkstra over the complete graph of n nodes without the blocked edges (O(n^2), n is small).
+/// Equal costs keep the first-found predecessor and the smallest unvisited index, so the result
+/// is deterministic.
+std::vector<std::size_t> shortestPath(const std::vector<std::vector<double>>& length,
+                                      const std::vector<std::vector<EdgeState>>& state) {
+  const std::size_t n = length.size();
+  constexpr double unreached = std::numeric_limits<double>::infinity();
+  constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+  std::vector<double> cost(n, unreached);
+  std::vector<std::size_t> previous(n, none);
+  std::vector<char> done(n, 0);
+  cost[0] = 0.0;
+  for (std::size_t round = 0; round < n; ++round) {
+    std::size_t current = none;
+    for (std::size_t i = 0; i < n; ++i)
+      if (done[i] == 0 && cost[i] < unreached && (current == none || cost[i] < cost[current])) current = i;
+    if (current == none || current == n - 1) break;
+    done[current] = 1;
+    for (std::size_t next = 0; next < n; ++next) {
+      if (done[next] != 0 || next == current || state[current][next] == EdgeState::Blocked) continue;
+      const double candidate = cost[current] + length[current][next];
+      if (candidate < cost[next]) {
+        cost[next] = candidate;
+        previous[next] = current;
+      }
+    }
+  }
+  std::vector<std::size_t> path;
+  for (std::size_t at = n - 1; at != none; at = previous[at]) path.push_back(at);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+}  // namespace
+
+std::vector<std::size_t> shortcutPathIndices(const std::vector<Configuration>& path,
+                                             const PlanningSpace& space, MotionValidator& motionValidator) {
+  const std::size_t n = path.size();
+  if (n <= 2) {
+    std::vector<std::size_t> all(n);
+    for (std::size_t i = 0; i < n; ++i) all[i] = i;
+    return all;
+  }
+  std::vector<std::vector<double>> length(n, std::vector<double>(n, 0.0));
+  std::vector<std::vector<EdgeState>> state(n, std::vector<EdgeState>(n, EdgeState::Unknown));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) length[i][j] = length[j][i] = space.distance(path[i], path[j]);
+  for (std::size_t i = 0; i + 1 < n; ++i) state[i][i + 1] = state[i + 1][i] = EdgeState::Free;
+
+  // Each round settles at least one unknown edge, and the original chain keeps a path, so this ends.
+  for (;;) {
+    const std::vector<std::size_t> candidate = shortestPath(length, state);
+    bool allFree = true;
+    for (std::size_t k = 0; k + 1 < candidate.size() && allFree; ++k) {
+      const std::size_t a = candidate[k];
+      const std::size_t b = candidate[k + 1];
+      if (state[a][b] != EdgeState::Unknown) continue;
+      const bool free = motionValidator.isValid(path[a], path[b]);
+      state[a][b] = state[b][a] = free ? EdgeState::Free : EdgeState::Blocked;
+      allFree = free;
+    }
+    if (allFree) return candidate;
+  }
+}
+
+std::vector<Configuration> smoothPath(const std::vector<Configuration>& path, const PlanningSpace& space,
+                                      MotionValidator& motionValidator) {
+  std::vector<Configuration> smoothed;
+  for (const std::size_t i : shortcutPathIndices(path, space, motionValidator)) smoothed.push_back(path[i]);
+  return smoothed;
+}
+
+double pathLength(const std::vector<Configuration>& path, const PlanningSpace& space) {
+  double total = 0.0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) total += space.distance(path[i], path[i + 1]);
+  return total;
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,38 @@
+#include "pmdplan/planning/roadmap.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace pmdplan {
+
+NodeIndex Roadmap::addNode(RoadmapNode node) {
+  if (!nodes_.empty() && node.unit.size() != nodes_.front().unit.size())
+    throw std::invalid_argument("Roadmap::addNode: node has " + std::to_string(node.unit.size()) +
+                                " normalised coordinates, the roadmap " +
+                                std::to_string(nodes_.front().unit.size()));
+  nodes_.push_back(std::move(node));
+  adjacency_.emplace_back();
+  components_.add();
+  return nodes_.size() - 1;
+}
+
+void Roadmap::addEdge(NodeIndex a, NodeIndex b) {
+  if (a >= nodes_.size() || b >= nodes_.size() || a == b)
+    throw std::invalid_argument("Roadmap::addEdge: bad edge " + std::to_string(a) + "-" + std::to_string(b));
+  const double length = distance(a, b);
+  adjacency_[a].push_back({b, length});
+  adjacency_[b].push_back({a, length});
+  components_.unite(a, b);
+  ++edgeCount_;
+}
+
+double Roadmap::distance(NodeIndex a, NodeIndex b) const { return (nodes_[a].unit - nodes_[b].unit).norm(); }
+
+void Roadmap::clear() {
+  nodes_.clear();
+  adjacency_.clear();
+  components_.clear();
+  edgeCount_ = 0;
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,228 @@
+#include "pmdplan/synergy/synergy_model_file.hpp"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/data_directory.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/glove/yaml_input.hpp"
+
+namespace pmdplan {
+namespace {
+
+constexpr std::string_view kFormat = "pmdplan-synergy-model";
+constexpr double kUnitTolerance = 1e-6;  // file values are rounded; orthonormality to 1e-6 is exact enough
+
+enum class Part { Joints, Mean, OwnAxis, Direction };
+/// Names where a part of the model is: "line 12 (directions[1])" for a file, "directions[1]" otherwise.
+using Locate = std::function<std::string(Part, int)>;
+
+std::string defaultLocation(Part part, int index) {
+  switch (part) {
+    case Part::Joints: return "joints";
+    case Part::Mean: return "mean";
+    case Part::OwnAxis: return "own_axis_joints";
+    case Part::Direction: return "directions[" + std::to_string(index) + "]";
+  }
+  return {};
+}
+
+void validate(const SynergyModel& model, const std::string& source, const Locate& at) {
+  const auto n = model.jointCount();
+  if (n == 0) throw InputError(source, at(Part::Joints, 0), "the model covers no joints");
+  for (int j = 0; j < n; ++j) {
+    const JointLimit& joint = model.joints[static_cast<std::size_t>(j)];
+    if (joint.name.empty()) throw InputError(source, at(Part::Joints, j), "a joint without a name");
+    if (!(joint.lower < joint.upper))
+      throw InputError(source, at(Part::Joints, j), "joint " + joint.name + ": lower must be below upper");
+    for (int k = 0; k < j; ++k)
+      if (model.joints[static_cast<std::size_t>(k)].name == joint.name)
+        throw InputError(source, at(Part::Joints, j), "joint " + joint.name + " listed twice");
+  }
+  if (model.mean.size() != n)
+    throw InputError(source, at(Part::Mean, 0),
+                     "mean has " + std::to_string(model.mean.size()) + " values for " + std::to_string(n) + " joints");
+  for (int j = 0; j < n; ++j)
+    if (!(model.mean(j) >= -1e-9 && model.mean(j) <= 1 + 1e-9))
+      throw InputError(source, at(Part::Mean, 0),
+                       "mean of " + model.joints[static_cast<std::size_t>(j)].name + " is " +
+                           exactNumberText(model.mean(j)) + "; normalised values lie in [0, 1]");
+  std::vector<int> ownAxis;
+  for (const auto& name : model.ownAxisJoints) {
+    const int index = model.jointIndex(name);
+    if (index < 0) throw InputError(source, at(Part::OwnAxis, 0), "own-axis joint '" + name + "' is not among the joints");
+    ownAxis.push_back(index);
+  }
+  const auto d = model.directionCount();
+  if (model.directions.rows() != n && d > 0)
+    throw InputError(source, at(Part::Direction, 0), "directions need one value per joint");
+  if (d == 0 && ownAxis.empty()) throw InputError(source, at(Part::Direction, 0), "the model has no directions");
+  if (model.sigma.size() != d || model.varianceFraction.size() != d)
+    throw InputError(source, at(Part::Direction, 0), "every direction needs a sigma and a variance fraction");
+  for (int k = 0; k < d; ++k) {
+    if (!(model.sigma(k) >= 0))
+      throw InputError(source, at(Part::Direction, k), "sigma must be zero or positive");
+    if (!(model.varianceFraction(k) >= 0 && model.varianceFraction(k) <= 1 + 1e-9))
+      throw InputError(source, at(Part::Direction, k), "variance_fraction must lie in [0, 1]");
+    const double length = model.directions.col(k).norm();
+    if (std::abs(length - 1) > kUnitTolerance)
+      throw InputError(source, at(Part::Direction, k),
+                       "direction " + std::to_string(k + 1) + " has length " + exactNumberText(length) +
+                           "; directions must be unit vectors");
+    for (const int j : ownAxis)
+      if (std::abs(model.directions(j, k)) > 1e-9)
+        throw InputError(source, at(Part::Direction, k),
+                         "direction " + std::to_string(k + 1) + " moves own-axis joint " +
+                             model.joints[static_cast<std::size_t>(j)].name + "; own-axis joints stay out of the directions");
+  }
+  if (d == 0) return;
+  if (model.orthonormal) {
+    for (int a = 0; a < d; ++a)
+      for (int b = 0; b < a; ++b) {
+        const double dot = model.directions.col(a).dot(model.directions.col(b));
+        if (std::abs(dot) > kUnitTolerance)
+          throw InputError(source, at(Part::Direction, a),
+                           "directions " + std::to_string(b + 1) + " and " + std::to_string(a + 1) +
+                               " are not orthonormal (dot product " + exactNumberText(dot) +
+                               "); the model says orthonormal: true — fix the vectors, or set orthonormal: false "
+                               "to use them as a non-orthogonal basis (coefficients by least squares)");
+      }
+    return;
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(model.directions);
+  if (svd.singularValues().minCoeff() < 1e-9)
+    throw InputError(source, at(Part::Direction, 0),
+                     "the directions are linearly dependent; a basis needs independent directions");
+}
+
+Eigen::VectorXd numberList(const YAML::Node& node, const std::string& file, const std::string& context) {
+  yaml_input::expectSequence(node, file, context);
+  Eigen::VectorXd values(static_cast<Eigen::Index>(node.size()));
+  for (std::size_t i = 0; i < node.size(); ++i)
+    values(static_cast<Eigen::Index>(i)) = yaml_input::number(node[i], file, context + "[" + std::to_string(i) + "]");
+  return values;
+}
+
+std::string numberListText(const Eigen::VectorXd& values) {
+  std::string text = "[";
+  for (Eigen::Index i = 0; i < values.size(); ++i) text += (i ? ", " : "") + exactNumberText(values(i));
+  return text + "]";
+}
+
+}  // namespace
+
+void validateSynergyModel(const SynergyModel& model, const std::string& sourceName) {
+  validate(model, sourceName, &defaultLocation);
+}
+
+SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
+  const YAML::Node root = yaml_input::parseDocument(text, file);
+  yaml_input::rejectUnknownKeys(root,
+                                {"format", "version", "provenance", "joints", "own_axis_joints", "orthonormal", "mean",
+                                 "directions"},
+                                file, "");
+  yaml_input::checkFormat(root, kFormat, file);
+  SynergyModel model;
+  if (const YAML::Node provenance = root["provenance"]; provenance.IsDefined())
+    model.provenance = yaml_input::text(provenance, file, "provenance");
+
+  const YAML::Node joints = yaml_input::required(root, "joints", file, "");
+  yaml_input::expectSequence(joints, file, "joints");
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    const std::string context = "joints[" + std::to_string(i) + "]";
+    const YAML::Node joint = joints[i];
+    yaml_input::expectMap(joint, file, context);
+    yaml_input::rejectUnknownKeys(joint, {"name", "lower", "upper"}, file, context);
+    model.joints.push_back({yaml_input::text(yaml_input::required(joint, "name", file, context), file, context + ".name"),
+                            yaml_input::number(yaml_input::required(joint, "lower", file, context), file, context + ".lower"),
+                            yaml_input::number(yaml_input::required(joint, "upper", file, context), file, context + ".upper")});
+  }
+  if (const YAML::Node own = root["own_axis_joints"]; own.IsDefined() && !own.IsNull()) {
+    yaml_input::expectSequence(own, file, "own_axis_joints");
+    for (std::size_t i = 0; i < own.size(); ++i)
+      model.ownAxisJoints.push_back(yaml_input::text(own[i], file, "own_axis_joints"));
+  }
+  if (const YAML::Node orthonormal = root["orthonormal"]; orthonormal.IsDefined())
+    model.orthonormal = yaml_input::boolean(orthonormal, file, "orthonormal");
+  const YAML::Node meanNode = yaml_input::required(root, "mean", file, "");
+  model.mean = numberList(meanNode, file, "mean");
+
+  const YAML::Node directions = yaml_input::required(root, "directions", file, "");
+  yaml_input::expectSequence(directions, file, "directions");
+  const auto count = static_cast<Eigen::Index>(directions.size());
+  model.directions = Eigen::MatrixXd::Zero(model.jointCount(), count);
+  model.sigma.resize(count);
+  model.varianceFraction.resize(count);
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const YAML::Node direction = directions[static_cast<std::size_t>(k)];
+    const std::string context = "directions[" + std::to_string(k) + "]";
+    yaml_input::expectMap(direction, file, context);
+    yaml_input::rejectUnknownKeys(direction, {"sigma", "variance_fraction", "vector"}, file, context);
+    model.sigma(k) = yaml_input::number(yaml_input::required(direction, "sigma", file, context), file, context + ".sigma");
+    model.varianceFraction(k) = yaml_input::number(yaml_input::required(direction, "variance_fraction", file, context),
+                                                   file, context + ".variance_fraction");
+    const Eigen::VectorXd vector =
+        numberList(yaml_input::required(direction, "vector", file, context), file, context + ".vector");
+    if (vector.size() != model.jointCount())
+      throw InputError(file, yaml_input::lineOf(direction) + " (" + context + ".vector)",
+                       std::to_string(vector.size()) + " values for " + std::to_string(model.jointCount()) + " joints");
+    model.directions.col(k) = vector;
+  }
+
+  validate(model, file, [&](Part part, int index) {
+    const std::string name = defaultLocation(part, index);
+    switch (part) {
+      case Part::Joints: return yaml_input::lineOf(static_cast<std::size_t>(index) < joints.size() ? joints[static_cast<std::size_t>(index)] : joints) + " (" + name + ")";
+      case Part::Mean: return yaml_input::lineOf(meanNode) + " (mean)";
+      case Part::OwnAxis: return yaml_input::lineOf(root["own_axis_joints"]) + " (own_axis_joints)";
+      case Part::Direction:
+        return yaml_input::lineOf(static_cast<std::size_t>(index) < directions.size() ? directions[static_cast<std::size_t>(index)] : directions) + " (" + name + ")";
+    }
+    return name;
+  });
+  return model;
+}
+
+SynergyModel loadSynergyModel(const std::filesystem::path& path) {
+  return parseSynergyModel(readTextFile(path), path.string());
+}
+
+std::string formatSynergyModel(const SynergyModel& model) {
+  std::string text =
+      "# Principal motion directions of a robot hand (pmdplan synergy model). Joint limits in rad;\n"
+      "# mean, vectors and sigma in joint values normalised to [0, 1] by those limits. Own-axis joints\n"
+      "# are sampled over their whole range; along direction i the planner's box half-width is\n"
+      "# lambda_i = kappa * sigma_i.\n";
+  text += "format: " + std::string(kFormat) + "\nversion: 1\n";
+  text += "provenance: " + yaml_input::quoted(model.provenance) + "\n";
+  text += "joints:\n";
+  for (const JointLimit& joint : model.joints)
+    text += "  - {name: " + joint.name + ", lower: " + exactNumberText(joint.lower) +
+            ", upper: " + exactNumberText(joint.upper) + "}\n";
+  text += "own_axis_joints: [";
+  for (std::size_t i = 0; i < model.ownAxisJoints.size(); ++i) text += (i ? ", " : "") + model.ownAxisJoints[i];
+  text += "]\n";
+  text += std::string("orthonormal: ") + (model.orthonormal ? "true" : "false") + "\n";
+  text += "mean: " + numberListText(model.mean) + "\n";
+  text += "directions:\n";
+  for (int k = 0; k < model.directionCount(); ++k)
+    text += "  - {sigma: " + exactNumberText(model.sigma(k)) +
+            ", variance_fraction: " + exactNumberText(model.varianceFraction(k)) +
+            ",\n     vector: " + numberListText(model.directions.col(k)) + "}\n";
+  return text;
+}
+
+void saveSynergyModel(const std::filesystem::path& path, const SynergyModel& model) {
+  validateSynergyModel(model, path.string());
+  writeFileAtomically(path, formatSynergyModel(model));
+}
+
+std::filesystem::path defaultSynergyModelPath(const std::string& robotName) {
+  return dataDirectory() / "synergies" / (robotName + "_default.yaml");
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,103 @@
+#include "pmdplan/world/task.hpp"
+
+#include "joint_values_reading.hpp"
+#include "obstacle_reading.hpp"
+#include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/data_directory.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "placement_reading.hpp"
+#include "yaml_field.hpp"
+
+namespace pmdplan {
+namespace {
+
+constexpr const char* kRobotForm =
+    "a built-in robot name (data/robots/<name>/) or a path to a .urdf file relative to the task "
+    "file";
+
+/// `robot:` names a built-in robot unless it looks like a path (has a directory part or ends in
+/// .urdf); a URDF path uses the SRDF of the same stem beside it when there is one.
+std::shared_ptr<const RobotModel> readRobot(const YamlField& field,
+                                            const std::filesystem::path& taskDirectory) {
+  const std::string written = field.text(kRobotForm);
+  if (written.empty()) field.fail(std::string("expected ") + kRobotForm + ", got an empty string");
+  const std::filesystem::path asPath = written;
+  if (asPath.has_parent_path() || asPath.extension() == ".urdf") {
+    std::filesystem::path urdf = asPath.is_relative() ? taskDirectory / asPath : asPath;
+    urdf = std::filesystem::absolute(urdf).lexically_normal();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(urdf, error)) {
+      field.fail("URDF file not found: " + urdf.string() + " (relative to the task file)");
+    }
+    std::optional<std::filesystem::path> srdf;
+    if (auto candidate = std::filesystem::path(urdf).replace_extension(".srdf");
+        std::filesystem::is_regular_file(candidate, error)) {
+      srdf = candidate;
+    }
+    return std::make_shared<const RobotModel>(RobotModel::load(urdf, srdf));
+  }
+  const auto builtIn = dataDirectory() / "robots" / written / (written + ".urdf");
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(builtIn, error)) {
+    field.fail("unknown built-in robot '" + written + "' (no " + builtIn.string() +
+               "); expected " + kRobotForm);
+  }
+  return std::make_shared<const RobotModel>(RobotModel::loadBuiltIn(written));
+}
+
+}  // namespace
+
+const Obstacle* Task::findObstacle(const std::string& obstacleName) const {
+  for (const Obstacle& obstacle : obstacles) {
+    if (obstacle.name == obstacleName) return &obstacle;
+  }
+  return nullptr;
+}
+
+Task loadTask(const std::filesystem::path& file) {
+  const std::string fileName = file.string();
+  const std::string text = readTextFile(file);
+  const YamlField root(fileName, parseYamlDocument(text, fileName));
+  const std::filesystem::path taskDirectory = std::filesystem::absolute(file).parent_path();
+
+  root.requireMapWithKeys(
+      {"name", "description", "robot", "base", "target", "obstacles", "start", "goal"},
+      "a task map");
+  Task task;
+  task.file = file;
+  const YamlField nameField = root.child("name", "the task name");
+  task.name = nameField.text("the task name");
+  if (task.name.empty()) nameField.fail("expected the task name, got an empty string");
+  if (const auto description = root.optionalChild("description")) {
+    task.description = description->text("a one-line description");
+  }
+  task.robot = readRobot(root.child("robot", kRobotForm), taskDirectory);
+
+  const std::string baseForm = "the robot base pose {xyz: [x, y, z] m, rpy_deg: [r, p, y]}";
+  const YamlField base = root.child("base", baseForm);
+  base.requireMapWithKeys({"xyz", "rpy_deg"}, baseForm);
+  task.base = readPlacement(base);
+
+  task.obstacles = readObstacles(root.child("obstacles", "a list of obstacles (may be [])"),
+                                 taskDirectory);
+  if (const auto target = root.optionalChild("target")) {
+    const std::string name = target->text("the name of an obstacle");
+    if (!task.findObstacle(name)) {
+      std::string names;
+      for (const auto& obstacle : task.obstacles) names += (names.empty() ? "" : ", ") + obstacle.name;
+      target->fail("'" + name + "' names no obstacle; expected one of: " +
+                   (names.empty() ? std::string("(no obstacles)") : names));
+    }
+    task.target = name;
+  }
+  const std::string configurationForm = "{joints_deg: {...}} or {joints: {...}}";
+  task.start = readJointValues(root.child("start", configurationForm), *task.robot);
+  task.goal = readJointValues(root.child("goal", configurationForm), *task.robot);
+  return task;
+}
+
+Task loadTaskByName(const std::string& nameOrPath) {
+  return loadTask(resolveTaskPath(nameOrPath));
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,197 @@
+#include "yaml_field.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "pmdplan/core/input_error.hpp"
+
+namespace pmdplan {
+namespace {
+
+int oneBasedLine(const YAML::Node& node) {
+  const YAML::Mark mark = node.Mark();
+  return mark.line >= 0 ? mark.line + 1 : 0;
+}
+
+std::string quoted(std::string_view text) {
+  std::string result(1, '\'');  // built by appending: GCC 12 warns falsely on "'" + string
+  result.append(text);
+  result.push_back('\'');
+  return result;
+}
+
+std::string describeNode(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null: return "nothing";
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Scalar: return quoted(node.Scalar());
+    default: return "an undefined value";
+  }
+}
+
+std::string joinKeys(std::initializer_list<std::string_view> keys) {
+  std::string joined;
+  for (const auto key : keys) joined += (joined.empty() ? "" : ", ") + std::string(key);
+  return joined;
+}
+
+}  // namespace
+
+std::string joinFieldPath(const std::string& parent, std::string_view key) {
+  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+}
+
+YAML::Node parseYamlDocument(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& error) {
+    throw InputError(file,
+                     "line " + std::to_string(error.mark.line + 1) + ", column " +
+                         std::to_string(error.mark.column + 1),
+                     "YAML syntax error: " + error.msg);
+  }
+}
+
+YamlField::YamlField(std::string file, YAML::Node root) : YamlField(std::move(file), "", root) {}
+
+YamlField::YamlField(std::string file, std::string path, YAML::Node node)
+    : file_(std::move(file)), path_(std::move(path)), node_(node), line_(oneBasedLine(node)) {}
+
+void YamlField::fail(const std::string& message) const {
+  std::string field = path_.empty() ? std::string("document") : path_;
+  if (line_ > 0) field += " (line " + std::to_string(line_) + ")";
+  throw InputError(file_, field, message);
+}
+
+std::vector<std::pair<std::string, YamlField>> YamlField::mapEntries(
+    const std::string& expected) const {
+  if (!node_.IsMap()) fail("expected " + expected + ", got " + describeNode(node_));
+  std::vector<std::pair<std::string, YamlField>> entries;
+  std::map<std::string, int> firstLine;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const YAML::Node key = it->first;
+    if (!key.IsScalar()) {
+      at(path_, key).fail("map keys must be plain names, got " + describeNode(key));
+    }
+    const std::string name = key.Scalar();
+    YamlField keyField = at(joinFieldPath(path_, name), key);
+    if (const auto previous = firstLine.find(name); previous != firstLine.end()) {
+      keyField.fail("given twice (first on line " + std::to_string(previous->second) +
+                    "); each key may appear once");
+    }
+    firstLine.emplace(name, keyField.line());
+    entries.emplace_back(name, at(joinFieldPath(path_, name), it->second));
+  }
+  return entries;
+}
+
+void YamlField::requireMapWithKeys(std::initializer_list<std::string_view> allowed,
+                                   const std::string& expected,
+                                   const std::string& unknownKeyLabel) const {
+  if (!node_.IsMap()) fail("expected " + expected + ", got " + describeNode(node_));
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const YAML::Node key = it->first;
+    if (!key.IsScalar()) continue;  // mapEntries below reports it
+    bool known = false;
+    for (const auto candidate : allowed) known = known || key.Scalar() == candidate;
+    if (!known) {
+      at(joinFieldPath(path_, key.Scalar()), key)
+          .fail(unknownKeyLabel + " '" + key.Scalar() + "'; expected " + expected +
+                " (keys: " + joinKeys(allowed) + ")");
+    }
+  }
+  mapEntries(expected);  // rejects repeated and non-scalar keys
+}
+
+bool YamlField::has(std::string_view key) const {
+  return node_.IsMap() && node_[std::string(key)].IsDefined();
+}
+
+YamlField YamlField::child(std::string_view key, const std::string& expected) const {
+  if (auto found = optionalChild(key)) return *found;
+  // Report the missing key at the line of the map that should hold it.
+  YamlField missing = at(joinFieldPath(path_, key), node_);
+  missing.fail("missing; expected " + expected);
+}
+
+std::optional<YamlField> YamlField::optionalChild(std::string_view key) const {
+  if (!node_.IsMap()) return std::nullopt;
+  const YAML::Node value = node_[std::string(key)];
+  if (!value.IsDefined()) return std::nullopt;
+  return at(joinFieldPath(path_, key), value);
+}
+
+std::vector<YamlField> YamlField::elements(const std::string& expected) const {
+  if (!node_.IsSequence()) fail("expected " + expected + ", got " + describeNode(node_));
+  std::vector<YamlField> result;
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    result.push_back(at(path_ + "[" + std::to_string(i) + "]", node_[i]));
+  }
+  return result;
+}
+
+std::string YamlField::text(const std::string& expected) const {
+  if (!node_.IsScalar()) fail("expected " + expected + ", got " + describeNode(node_));
+  return node_.Scalar();
+}
+
+double YamlField::number(const std::string& expected) const {
+  if (!node_.IsScalar()) fail("expected " + expected + ", got " + describeNode(node_));
+  // A quoted scalar is a string in YAML even if it looks like a number.
+  if (node_.Tag() == "!") fail("expected " + expected + ", got the quoted string " +
+                               quoted(node_.Scalar()));
+  std::string_view digits = node_.Scalar();
+  if (digits == ".nan" || digits == ".NaN" || digits == ".NAN" || digits == ".inf" ||
+      digits == ".Inf" || digits == ".INF" || digits == "-.inf" || digits == "-.Inf" ||
+      digits == "-.INF" || digits == "+.inf" || digits == "+.Inf" || digits == "+.INF") {
+    fail("expected " + expected + ", got " + quoted(digits) + ", which is not a finite number");
+  }
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (error == std::errc::result_out_of_range) {
+    fail("expected " + expected + ", got " + quoted(node_.Scalar()) + ", which is out of range");
+  }
+  if (error != std::errc() || end != digits.data() + digits.size()) {
+    fail("expected " + expected + ", got " + quoted(node_.Scalar()));
+  }
+  if (!std::isfinite(value)) {
+    fail("expected " + expected + ", got " + quoted(node_.Scalar()) +
+         ", which is not a finite number");
+  }
+  return value;
+}
+
+double YamlField::positiveNumber(const std::string& expected) const {
+  const double value = number(expected);
+  if (!(value > 0.0)) {
+    std::ostringstream shown;
+    shown << value;
+    fail("expected " + expected + ", got " + shown.str());
+  }
+  return value;
+}
+
+Eigen::Vector3d YamlField::vector3(const std::string& expected) const {
+  const auto items = elements(expected);
+  if (items.size() != 3) {
+    fail("expected " + expected + ", got a list of " + std::to_string(items.size()) +
+         " values (need exactly 3)");
+  }
+  return {items[0].number(expected), items[1].number(expected), items[2].number(expected)};
+}
+
+Eigen::Vector3d YamlField::positiveVector3(const std::string& expected) const {
+  const auto items = elements(expected);
+  if (items.size() != 3) {
+    fail("expected " + expected + ", got a list of " + std::to_string(items.size()) +
+         " values (need exactly 3)");
+  }
+  return {items[0].positiveNumber(expected), items[1].positiveNumber(expected),
+          items[2].positiveNumber(expected)};
+}
+
+}  // namespace pmdplan
