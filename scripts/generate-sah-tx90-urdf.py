@@ -189,7 +189,7 @@ palm_size = [PALM[1] - PALM[0], PALM[3] - PALM[2], PALM[5] - PALM[4]]
 link("palm", [(trans(*palm_centre), box(palm_size))])
 
 PROXIMAL, MEDIUM, DISTAL_TIP = 67.8, 30.0, 29.5  # mm
-RADIUS = {"proximal": 0.0115, "medium": 0.0105, "distal": 0.0095, "tip": 0.010, "knuckle": 0.0125}
+RADIUS = {"proximal": 0.0115, "medium": 0.0105, "distal": 0.0100, "tip": 0.010, "knuckle": 0.0125}
 ABDUCTION, PROXIMAL_LIMITS, MEDIUM_LIMITS = (-15, 15), (-4, 75), (4, 75)
 
 def finger(name, parent, base):
@@ -198,14 +198,20 @@ def finger(name, parent, base):
     link(f"{name}_knuckle", [(identity(), sphere(RADIUS["knuckle"]))])
     # Kautham flexes about -z of these frames; our flexion is positive, so the axes point along -z.
     joint(f"{name}_proximal", "revolute", f"{name}_knuckle", f"{name}_proximal_link", mm(rot_x(-90)), "0 0 -1", PROXIMAL_LIMITS, velocity=math.radians(360))
-    link(f"{name}_proximal_link", capsule([0, 0, 0], [PROXIMAL / 1000, 0, 0], RADIUS["proximal"]))
+    # Phalanges: a capsule about the joint axis line plus a pad on the palmar side (-y of these
+    # frames, where flexion moves), which makes them about as thick as the published cross-section
+    # (proximal about 37 mm) where a grasp touches the object.
+    link(f"{name}_proximal_link", capsule([0, 0, 0], [PROXIMAL / 1000, 0, 0], RADIUS["proximal"]) +
+         [(trans(0.036, -0.010, 0), box([0.052, 0.020, 0.020]))])
     joint(f"{name}_medium", "revolute", f"{name}_proximal_link", f"{name}_medium_link", mm(trans(PROXIMAL, 0, 0)), "0 0 -1", MEDIUM_LIMITS, velocity=math.radians(360))
-    link(f"{name}_medium_link", capsule([0, 0, 0], [MEDIUM / 1000, 0, 0], RADIUS["medium"]))
+    link(f"{name}_medium_link", capsule([0, 0, 0], [MEDIUM / 1000, 0, 0], RADIUS["medium"]) +
+         [(trans(0.015, -0.008, 0), box([0.022, 0.016, 0.019]))])
     joint(f"{name}_distal", "revolute", f"{name}_medium_link", f"{name}_distal_link",
           mm(matmul(trans(MEDIUM, 0, 0), rot_z(-90))), "0 0 -1", MEDIUM_LIMITS, mimic=f"{name}_medium", velocity=math.radians(360))
     # The fingertip point (0, 29.5, 0) of the distal frame is the centre of a 10 mm sphere.
     link(f"{name}_distal_link", [(along([0, 0, 0], [0, DISTAL_TIP / 1000, 0])[0], cylinder(RADIUS["distal"], DISTAL_TIP / 1000)),
-                                 (trans(0, DISTAL_TIP / 1000, 0), sphere(RADIUS["tip"]))], "tip")
+                                 (trans(0, DISTAL_TIP / 1000, 0), sphere(RADIUS["tip"])),
+                                 (trans(0.00625, 0.01675, 0), box([0.0125, 0.0255, 0.017]))], "tip")
 
 # Thumb base (joint 0): turns the whole thumb about the palm z axis through (-3, 27.1) mm; Kautham's
 # q0 runs -90..0, ours 0..90 toward opposition, hence the -z axis.

@@ -8,6 +8,7 @@
 #include "deterministic_random.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/cyberglove_sensors.hpp"
+#include "synthetic_latent_basis.hpp"
 #include "synthetic_latent_motion.hpp"
 #include "pmdplan/synergy/kautham_sah_synergies.hpp"
 
@@ -23,27 +24,6 @@ constexpr double kRangeMargin = 0.5;
 // The synthetic glove's thumb-roll reading picks up thumb abduction (as a real CyberGlove's does);
 // its calibration carries the cross term that removes it, in counts of ThumbRotate per count of ThumbAb.
 constexpr double kThumbCrossTalk = 0.1;
-
-/// PMD 1-4 restricted to the latent joints, thumb-abduction entry cleared in PMD 1, 2 and 4 so the
-/// thumb roll stays independent of the fingers (FACTS §4), Gram-Schmidt, then completed to an
-/// orthonormal basis of all latent joints.
-Eigen::MatrixXd latentBasis(const Eigen::MatrixXd& pmds, int thumbAbductionRow) {
-  const auto n = pmds.rows();
-  Eigen::MatrixXd basis(n, n);
-  Eigen::Index filled = 0;
-  const auto addOrthogonalised = [&](Eigen::VectorXd vector) {
-    for (Eigen::Index k = 0; k < filled; ++k) vector -= basis.col(k).dot(vector) * basis.col(k);
-    if (vector.norm() < 1e-6) return;
-    basis.col(filled++) = vector.normalized();
-  };
-  for (Eigen::Index k = 0; k < pmds.cols(); ++k) {
-    Eigen::VectorXd pmd = pmds.col(k);
-    if (k != 2) pmd(thumbAbductionRow) = 0.0;  // PMD 3 is thumb opposition: it keeps the thumb roll
-    addOrthogonalised(pmd);
-  }
-  for (Eigen::Index i = 0; i < n && filled < n; ++i) addOrthogonalised(Eigen::VectorXd::Unit(n, i));
-  return basis;
-}
 
 /// How a sensor not driven by a latent joint moves: a function of the joint angles (rad) plus
 /// some smooth noise of its own, and the range its synthetic calibration covers.
@@ -117,7 +97,15 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
     mean(r) = table.mean(j);
     if (table.joints[static_cast<std::size_t>(j)] == "thumb_abduction") thumbAbductionRow = static_cast<int>(r);
   }
-  const Eigen::MatrixXd basis = latentBasis(pmds, thumbAbductionRow);
+  LatentBasisSettings basisSettings;
+  basisSettings.pmds = pmds;
+  basisSettings.variances = Eigen::Map<const Eigen::VectorXd>(fractions.data(), latentCount) * parameters.totalVariance;
+  basisSettings.thumbRollRow = thumbAbductionRow;
+  for (Eigen::Index r = 0; r < latentCount; ++r) {
+    const std::string& joint = table.joints[static_cast<std::size_t>(latentRows[static_cast<std::size_t>(r)])];
+    if (joint.rfind("thumb_", 0) != 0) basisSettings.fingerRows.push_back(static_cast<int>(r));
+  }
+  const Eigen::MatrixXd basis = latentBasis(basisSettings);
 
   // Invert the mapping for each latent joint: one sensor drives it, and drives no other latent joint.
   std::vector<int> sensorOfLatent(static_cast<std::size_t>(latentCount));

@@ -1,0 +1,128 @@
+// `pmdplan glove synth …`: a synthetic operator's glove recording (raw CyberGlove frames plus the
+// calibration file they need) — NOT human data, and every file says so.
+// `pmdplan glove convert IN -o OUT`: between the CSV form and the raw 'G'-reply serial stream.
+#include <iostream>
+#include <memory>
+
+#include "command_registry.hpp"
+#include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/data_directory.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/glove/glove_calibration_file.hpp"
+#include "pmdplan/glove/glove_csv.hpp"
+#include "pmdplan/glove/glove_serial_stream.hpp"
+#include "pmdplan/model/robot_model.hpp"
+#include "pmdplan/synergy/hand_mapping_file.hpp"
+#include "pmdplan/synergy/synthetic_operator.hpp"
+
+namespace pmdplan::cli {
+namespace {
+
+/// The robot's hand joints (its "hand" group): a built-in robot's name or a .urdf file (with its
+/// .srdf companion beside it).
+JointLimits handJointsOf(const std::string& robot) {
+  const std::filesystem::path path = robot;
+  const RobotModel model = [&] {
+    if (path.extension() != ".urdf") return RobotModel::loadBuiltIn(robot);
+    auto srdf = std::filesystem::path(path).replace_extension(".srdf");
+    return RobotModel::load(path, std::filesystem::exists(srdf) ? std::optional(srdf) : std::nullopt);
+  }();
+  if (!model.hasGroup("hand"))
+    throw InputError(model.urdfPath().string(), "group hand", "the robot's companion file defines no \"hand\" group");
+  JointLimits joints;
+  for (const int index : model.group("hand")) joints.push_back(model.activeJoints()[static_cast<std::size_t>(index)]);
+  return joints;
+}
+
+std::filesystem::path calibrationBeside(const std::filesystem::path& recording) {
+  return std::filesystem::path(recording).replace_extension(".calibration.yaml");
+}
+
+struct SynthOptions {
+  int frames = 13500;
+  std::uint64_t seed = 1;
+  std::string output;
+  std::string calibrationOutput;
+  std::string mapping;
+  std::string robot = "sah_tx90";
+};
+
+int runSynth(const SynthOptions& o) {
+  if (o.frames < 1) throw InputError("", "--frames", "expected a positive number of frames");
+  const std::filesystem::path output = o.output;
+  if (output.extension() != ".csv") throw InputError("", "-o", "the synthetic recording is written as CSV: give a .csv file name");
+  const std::filesystem::path calibrationPath = o.calibrationOutput.empty() ? calibrationBeside(output) : o.calibrationOutput;
+  const HandMapping mapping = loadHandMapping(o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping));
+  SyntheticOperatorParameters parameters;
+  parameters.frames = o.frames;
+  parameters.seed = o.seed;
+  SyntheticGloveSession session = synthesiseGloveSession(parameters, mapping, handJointsOf(o.robot));
+  session.recording.notes.push_back("Calibration: " + calibrationPath.filename().string() + " (also synthetic).");
+  writeFileAtomically(output, formatGloveCsv(session.recording));
+  writeFileAtomically(calibrationPath, formatGloveCalibration(session.calibration));
+  std::cout << "wrote " << output.string() << ": " << o.frames << " SYNTHETIC glove frames (seed " << o.seed
+            << ", not human data)\nwrote " << calibrationPath.string() << ": its synthetic calibration\n";
+  return 0;
+}
+
+enum class GloveFormat { Csv, Serial };
+
+GloveFormat formatOf(const std::string& path, const std::string& given, const std::string& option) {
+  if (given == "csv") return GloveFormat::Csv;
+  if (given == "serial") return GloveFormat::Serial;
+  if (!given.empty() && given != "auto") throw InputError("", option, "expected csv, serial or auto");
+  const auto extension = std::filesystem::path(path).extension();
+  if (extension == ".csv" || extension == ".txt") return GloveFormat::Csv;
+  if (extension == ".bin" || extension == ".raw" || extension == ".serial") return GloveFormat::Serial;
+  throw InputError(path, option, "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give " + option);
+}
+
+struct ConvertOptions {
+  std::string input;
+  std::string output;
+  std::string from = "auto";
+  std::string to = "auto";
+};
+
+int runConvert(const ConvertOptions& o) {
+  const GloveRecording recording = formatOf(o.input, o.from, "--from") == GloveFormat::Csv ? readGloveCsv(o.input)
+                                                                                           : readGloveSerialStream(o.input);
+  if (formatOf(o.output, o.to, "--to") == GloveFormat::Csv) {
+    writeFileAtomically(o.output, formatGloveCsv(recording));
+  } else {
+    for (std::size_t f = 0; f < recording.frames.size(); ++f)
+      for (const auto value : recording.frames[f])
+        if (value == 0)
+          throw InputError(o.input, "frame " + std::to_string(f + 1),
+                           "a raw reading of 0 cannot be sent in a 'G' reply (the glove sends 1-255)");
+    writeFileAtomically(o.output, formatGloveSerialStream(recording));
+  }
+  std::cout << "wrote " << o.output << ": " << recording.frameCount() << " frames\n";
+  return 0;
+}
+
+const CommandRegistrar registrar{
+    "glove", "Glove recordings: a synthetic operator (synth), format conversion (convert)", [](CLI::App& app) {
+      app.require_subcommand(1);
+      auto synth = std::make_shared<SynthOptions>();
+      CLI::App* synthCommand = app.add_subcommand(
+          "synth", "Write a SYNTHETIC operator's raw 22-sensor glove recording (CSV) and its calibration");
+      synthCommand->add_option("--frames", synth->frames, "Number of frames at 100 Hz (default 13500, as in the paper)");
+      synthCommand->add_option("--seed", synth->seed, "Random seed (same seed, same bytes; default 1)");
+      synthCommand->add_option("-o,--output", synth->output, "Recording to write (.csv)")->required();
+      synthCommand->add_option("--calibration-out", synth->calibrationOutput,
+                               "Calibration file to write (default: the recording's name with .calibration.yaml)");
+      synthCommand->add_option("--mapping", synth->mapping, "Hand mapping to invert (default data/glove/cyberglove22_to_sah.yaml)");
+      synthCommand->add_option("--robot", synth->robot, "Built-in robot name or .urdf file (default sah_tx90)");
+
+      auto convert = std::make_shared<ConvertOptions>();
+      CLI::App* convertCommand = app.add_subcommand("convert", "Convert a recording between CSV and the raw 'G'-reply stream");
+      convertCommand->add_option("input", convert->input, "Recording to read")->required();
+      convertCommand->add_option("-o,--output", convert->output, "Recording to write")->required();
+      convertCommand->add_option("--from", convert->from, "Input format: csv, serial or auto (by extension)");
+      convertCommand->add_option("--to", convert->to, "Output format: csv, serial or auto (by extension)");
+      return [synth, convert, synthCommand] { return synthCommand->parsed() ? runSynth(*synth) : runConvert(*convert); };
+    }};
+
+}  // namespace
+}  // namespace pmdplan::cli

@@ -1,0 +1,266 @@
+// `pmdplan synergies REC [--calibration F] [--mapping F] [-o model.yaml] [--json]`: a glove
+// recording through calibration, mapping and PCA to a synergy model; prints the cumulative
+// variance (the paper's Fig. 10) and the correlations of the paper's Fig. 7 joint pairs.
+// `pmdplan synergies --from-graspit FILE.xml --joints j1,j2,… -o model.yaml`: imports GraspIt
+// eigengrasps. `pmdplan synergies --show model.yaml`: checks and prints a model file.
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "command_registry.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/glove/glove_calibration_file.hpp"
+#include "pmdplan/glove/glove_csv.hpp"
+#include "pmdplan/glove/glove_serial_stream.hpp"
+#include "pmdplan/model/robot_model.hpp"
+#include "pmdplan/synergy/figure7_joint_pairs.hpp"
+#include "pmdplan/synergy/graspit_eigengrasp_import.hpp"
+#include "pmdplan/synergy/hand_mapping_file.hpp"
+#include "pmdplan/synergy/recording_analysis.hpp"
+#include "pmdplan/synergy/synergy_model_file.hpp"
+
+namespace pmdplan::cli {
+namespace {
+
+struct Options {
+  std::string recording;
+  std::string format = "auto";
+  std::string calibration;
+  std::string mapping;
+  std::string robot = "sah_tx90";
+  std::vector<std::string> ownAxis;
+  std::string output;
+  bool json = false;
+  std::string graspit;
+  std::vector<std::string> graspitJoints;
+  std::string show;
+};
+
+/// The robot's hand joints (its "hand" group): a built-in robot's name or a .urdf file (with its
+/// .srdf companion beside it).
+JointLimits handJointsOf(const std::string& robot) {
+  const std::filesystem::path path = robot;
+  const RobotModel model = [&] {
+    if (path.extension() != ".urdf") return RobotModel::loadBuiltIn(robot);
+    auto srdf = std::filesystem::path(path).replace_extension(".srdf");
+    return RobotModel::load(path, std::filesystem::exists(srdf) ? std::optional(srdf) : std::nullopt);
+  }();
+  if (!model.hasGroup("hand"))
+    throw InputError(model.urdfPath().string(), "group hand", "the robot's companion file defines no \"hand\" group");
+  JointLimits joints;
+  for (const int index : model.group("hand")) joints.push_back(model.activeJoints()[static_cast<std::size_t>(index)]);
+  return joints;
+}
+
+std::string fileName(const std::filesystem::path& path) { return path.filename().string(); }
+
+GloveRecording readRecording(const Options& o) {
+  const auto extension = std::filesystem::path(o.recording).extension();
+  std::string format = o.format;
+  if (format == "auto") {
+    if (extension == ".csv" || extension == ".txt") format = "csv";
+    else if (extension == ".bin" || extension == ".raw" || extension == ".serial") format = "serial";
+    else throw InputError(o.recording, "--format", "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give --format csv|serial");
+  }
+  if (format == "csv") return readGloveCsv(o.recording);
+  if (format == "serial") return readGloveSerialStream(o.recording);
+  throw InputError("", "--format", "expected csv, serial or auto");
+}
+
+std::vector<std::string> ownAxisJoints(const Options& o, const JointLimits& hand) {
+  if (o.ownAxis.size() == 1 && o.ownAxis.front() == "none") return {};
+  if (!o.ownAxis.empty()) return o.ownAxis;
+  // The paper keeps the SAH thumb base as an axis of its own (Sect. 4.2).
+  for (const auto& joint : hand)
+    if (joint.name == "thumb_base") return {"thumb_base"};
+  return {};
+}
+
+nlohmann::json vectorJson(const Eigen::VectorXd& values) {
+  auto list = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < values.size(); ++i) list.push_back(values(i));
+  return list;
+}
+
+nlohmann::json modelJson(const SynergyModel& model) {
+  nlohmann::json joints = nlohmann::json::array();
+  for (const auto& joint : model.joints) joints.push_back(joint.name);
+  nlohmann::json directions = nlohmann::json::array();
+  for (int k = 0; k < model.directionCount(); ++k) directions.push_back(vectorJson(model.directions.col(k)));
+  return {{"model_joint_names", joints},       {"own_axis_joints", model.ownAxisJoints},
+          {"orthonormal", model.orthonormal},   {"mean", vectorJson(model.mean)},
+          {"directions", directions},           {"sigma", vectorJson(model.sigma)},
+          {"variance_fraction", vectorJson(model.varianceFraction)}, {"provenance", model.provenance}};
+}
+
+void printModel(const SynergyModel& model) {
+  std::cout << model.provenance << "\n"
+            << model.jointCount() << " joints, " << model.directionCount() << " directions ("
+            << (model.orthonormal ? "orthonormal" : "NOT orthonormal: coefficients by least squares") << ")";
+  if (!model.ownAxisJoints.empty()) {
+    std::cout << "; own axis:";
+    for (const auto& name : model.ownAxisJoints) std::cout << " " << name;
+  }
+  std::cout << "\n  dir   sigma   variance %   cumulative %   box half-width at kappa 2\n";
+  double cumulative = 0;
+  for (int k = 0; k < model.directionCount(); ++k) {
+    cumulative += model.varianceFraction(k);
+    std::printf("  %3d  %6.4f   %9.2f   %12.2f   %8.4f\n", k + 1, model.sigma(k), 100 * model.varianceFraction(k),
+                100 * cumulative, model.boxHalfWidths(2.0)(k));
+  }
+}
+
+int runShow(const Options& o) {
+  const SynergyModel model = loadSynergyModel(o.show);
+  if (o.json) {
+    std::cout << modelJson(model).dump(2) << "\n";
+    return 0;
+  }
+  std::cout << o.show << ": ";
+  printModel(model);
+  return 0;
+}
+
+int runGraspIt(const Options& o) {
+  if (o.graspitJoints.empty())
+    throw InputError("", "--joints", "GraspIt files carry no joint names: give --joints j1,j2,... (one robot joint per dimension)");
+  const GraspItImport imported = importGraspItEigengrasps(o.graspit, o.graspitJoints, handJointsOf(o.robot));
+  if (!o.output.empty()) saveSynergyModel(o.output, imported.model);
+  if (o.json) {
+    nlohmann::json out = modelJson(imported.model);
+    out["notes"] = imported.notes;
+    if (!o.output.empty()) out["model_file"] = o.output;
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  printModel(imported.model);
+  for (const auto& note : imported.notes) std::cout << "note: " << note << "\n";
+  if (!o.output.empty()) std::cout << "wrote " << o.output << "\n";
+  return 0;
+}
+
+int runRecording(const Options& o) {
+  const JointLimits hand = handJointsOf(o.robot);
+  const GloveRecording recording = readRecording(o);
+  std::filesystem::path calibrationPath = o.calibration;
+  if (calibrationPath.empty()) {
+    calibrationPath = std::filesystem::path(o.recording).replace_extension(".calibration.yaml");
+    if (!std::filesystem::exists(calibrationPath))
+      throw InputError(o.recording, "--calibration",
+                       "no calibration given and " + fileName(calibrationPath) +
+                           " is not beside the recording; pass --calibration FILE");
+  }
+  const GloveCalibration calibration = loadGloveCalibration(calibrationPath);
+  const std::filesystem::path mappingPath = o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
+  const HandMapping mapping = loadHandMapping(mappingPath);
+  SynergyFitOptions fitOptions;
+  fitOptions.ownAxisJoints = ownAxisJoints(o, hand);
+  const bool synthetic = !recording.notes.empty() && recording.notes.front().rfind("SYNTHETIC", 0) == 0;
+  // File names only, so a model's provenance does not depend on where the files were.
+  const std::string provenance = std::string(synthetic ? "SYNTHETIC operator data (not human): " : "") + "glove recording " +
+                                 fileName(o.recording) + " (" + std::to_string(recording.frameCount()) +
+                                 " frames), calibration " + fileName(calibrationPath) + ", mapping " + fileName(mappingPath) +
+                                 "; PCA over joints normalised to [0, 1] by the limits of " + o.robot;
+  const RecordingAnalysis analysis = analyseRecording(recording, calibration, mapping, hand, fitOptions, provenance);
+  const SynergyFit& fit = analysis.fit;
+  if (!o.output.empty()) saveSynergyModel(o.output, fit.model);
+
+  const auto varying = [&](const std::string& name) -> Eigen::Index {
+    for (std::size_t i = 0; i < fit.varyingJoints.size(); ++i)
+      if (fit.varyingJoints[i] == name) return static_cast<Eigen::Index>(i);
+    return -1;
+  };
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const auto& pair : figure7JointPairs()) {
+    const auto a = varying(pair.first), b = varying(pair.second);
+    if (a < 0 || b < 0) continue;
+    const double r = fit.correlation(a, b);
+    pairs.push_back({{"first", pair.first},
+                     {"second", pair.second},
+                     {"r", r},
+                     {"r_paper_signs", r * paperSignOf(pair.first) * paperSignOf(pair.second)},
+                     {"paper", pair.paper == PaperCorrelation::Positive   ? "positive"
+                               : pair.paper == PaperCorrelation::Negative ? "negative"
+                                                                          : "uncorrelated"}});
+  }
+
+  if (o.json) {
+    nlohmann::json correlation = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < fit.correlation.rows(); ++i) correlation.push_back(vectorJson(fit.correlation.row(i).transpose()));
+    nlohmann::json clampedPerJoint = nlohmann::json::object();
+    for (std::size_t j = 0; j < hand.size(); ++j) clampedPerJoint[hand[j].name] = analysis.clampedPerJoint[j];
+    nlohmann::json out = {{"frames", fit.frames},
+                          {"synthetic", synthetic},
+                          {"clamped_values", analysis.clampedValues},
+                          {"clamped_per_joint", clampedPerJoint},
+                          {"joint_names", fit.varyingJoints},
+                          {"pca_joint_names", fit.pcaJoints},
+                          {"constant_joints", fit.constantJoints},
+                          {"cumulative_variance", vectorJson(fit.cumulativeVariance)},
+                          {"correlation", correlation},
+                          {"figure7_pairs", pairs}};
+    out["model"] = modelJson(fit.model);
+    if (!o.output.empty()) out["model_file"] = o.output;
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+
+  std::cout << o.recording << ": " << fit.frames << " frames (" << recording.dataLocation << ")"
+            << (synthetic ? ", SYNTHETIC operator data (not human)" : "") << "\n"
+            << "calibration " << calibrationPath.string() << ", mapping " << mappingPath.string() << ", robot " << o.robot << "\n";
+  std::printf("%lld joint values clamped at a limit (%.2f %% of %d frames x %zu joints)\n", analysis.clampedValues,
+              100.0 * static_cast<double>(analysis.clampedValues) / (static_cast<double>(fit.frames) * static_cast<double>(hand.size())),
+              fit.frames, hand.size());
+  std::cout << "PCA over " << fit.pcaJoints.size() << " joints normalised to [0, 1]";
+  if (!fitOptions.ownAxisJoints.empty()) {
+    std::cout << "; own axis:";
+    for (const auto& name : fitOptions.ownAxisJoints) std::cout << " " << name;
+  }
+  if (!fit.constantJoints.empty()) {
+    std::cout << "; constant, left out:";
+    for (const auto& name : fit.constantJoints) std::cout << " " << name;
+  }
+  std::cout << "\n\n PMDs   variance %   cumulative %     (paper, Fig. 10: 42.19, 77.12, 84.71 % for 1, 2, 3)\n";
+  for (int k = 0; k < fit.model.directionCount(); ++k)
+    std::printf(" %4d   %10.2f   %12.2f\n", k + 1, 100 * fit.model.varianceFraction(k), 100 * fit.cumulativeVariance(k));
+  std::cout << "\nCorrelations of the paper's Fig. 7 joint pairs (r here; [r in the paper's signs, flexion negative])\n";
+  for (const auto& pair : pairs)
+    std::printf("  %-16s ~ %-16s %+6.3f  [%+6.3f]  paper: %s\n", pair["first"].get<std::string>().c_str(),
+                pair["second"].get<std::string>().c_str(), pair["r"].get<double>(), pair["r_paper_signs"].get<double>(),
+                pair["paper"].get<std::string>().c_str());
+  if (!o.output.empty()) std::cout << "\nwrote " << o.output << "\n";
+  return 0;
+}
+
+int run(const Options& o) {
+  const int modes = !o.recording.empty() + !o.graspit.empty() + !o.show.empty();
+  if (modes != 1)
+    throw InputError("", "REC", "give exactly one of: a recording, --from-graspit FILE.xml, --show MODEL.yaml");
+  if (!o.show.empty()) return runShow(o);
+  if (!o.graspit.empty()) return runGraspIt(o);
+  return runRecording(o);
+}
+
+const CommandRegistrar registrar{
+    "synergies", "Glove recording -> principal motion directions (or import GraspIt eigengrasps, or show a model)",
+    [](CLI::App& app) {
+      auto o = std::make_shared<Options>();
+      app.add_option("recording", o->recording, "Glove recording: CSV, or a raw 'G'-reply stream (.bin/.raw/.serial)");
+      app.add_option("--format", o->format, "Recording format: csv, serial or auto (by extension; default)");
+      app.add_option("--calibration", o->calibration, "Calibration YAML (default: REC's name with .calibration.yaml)");
+      app.add_option("--mapping", o->mapping, "Sensor -> joint mapping YAML (default data/glove/cyberglove22_to_sah.yaml)");
+      app.add_option("--robot", o->robot, "Built-in robot name or .urdf file (default sah_tx90)");
+      app.add_option("--own-axis", o->ownAxis, "Joints kept as axes of their own (default thumb_base if the hand has it; 'none')")
+          ->delimiter(',');
+      app.add_option("-o,--output", o->output, "Synergy model file to write (YAML)");
+      app.add_flag("--json", o->json, "Print JSON instead of text");
+      app.add_option("--from-graspit", o->graspit, "Import a GraspIt eigengrasp XML file instead of reading a recording");
+      app.add_option("--joints", o->graspitJoints, "With --from-graspit: the robot joint of each dimension, in order")->delimiter(',');
+      app.add_option("--show", o->show, "Check and print a synergy model file");
+      return [o] { return run(*o); };
+    }};
+
+}  // namespace
+}  // namespace pmdplan::cli

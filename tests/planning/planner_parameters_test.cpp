@@ -1,0 +1,83 @@
+#include "pmdplan/planning/planner_parameters.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/planning/planning_statistics.hpp"
+
+namespace pmdplan {
+namespace {
+
+TEST(PlannerParameters, DefaultsAreTable3) {
+  const PlannerParameters pmd = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  EXPECT_EQ(pmd.initialArmHalfSize, 0.001);
+  EXPECT_EQ(pmd.neighbourCount, 10u);
+  EXPECT_EQ(pmd.armTrials, 10);
+  EXPECT_EQ(pmd.handTrials, 10);
+  EXPECT_GE(pmd.maxSamples, 1'000'000u) << "N large: the time limit is the real bound";
+  EXPECT_NO_THROW(pmd.check());
+
+  const PlannerParameters full = PlannerParameters::defaultsFor(HandSamplingMode::FullSpace);
+  EXPECT_EQ(full.initialArmHalfSize, 0.001);
+  EXPECT_EQ(full.armTrials, 20);
+  EXPECT_EQ(full.handTrials, 20);
+}
+
+void expectRejected(const PlannerParameters& parameters, const std::string& field) {
+  try {
+    parameters.check();
+    ADD_FAILURE() << "accepted bad " << field;
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), field);
+    EXPECT_TRUE(error.file().empty());
+  }
+}
+
+TEST(PlannerParameters, OutOfRangeValuesNameTheirOption) {
+  PlannerParameters p;
+  p.initialArmHalfSize = 0.0;
+  expectRejected(p, "rho-a");
+  p = {};
+  p.initialArmHalfSize = std::nan("");
+  expectRejected(p, "rho-a");
+  p = {};
+  p.neighbourCount = 0;
+  expectRejected(p, "neighbours");
+  p = {};
+  p.armTrials = 0;
+  expectRejected(p, "arm-trials");
+  p = {};
+  p.handTrials = -1;
+  expectRejected(p, "hand-trials");
+  p = {};
+  p.maxSamples = 0;
+  expectRejected(p, "max-samples");
+  p = {};
+  p.timeLimit = 0.0;
+  expectRejected(p, "time-limit");
+  p = {};
+  p.timeLimit = std::numeric_limits<double>::infinity();
+  EXPECT_NO_THROW(p.check()) << "no time limit is allowed";
+}
+
+TEST(HandSamplingMode, NamesRoundTrip) {
+  for (const HandSamplingMode mode : {HandSamplingMode::Synergy, HandSamplingMode::FullSpace})
+    EXPECT_EQ(parseHandSamplingMode(handSamplingModeName(mode)), mode);
+  EXPECT_EQ(handSamplingModeName(HandSamplingMode::Synergy), "pmd");
+  EXPECT_EQ(handSamplingModeName(HandSamplingMode::FullSpace), "full");
+  EXPECT_FALSE(parseHandSamplingMode("PMD").has_value());
+}
+
+TEST(PlannerStatus, HasStableNames) {
+  EXPECT_EQ(plannerStatusName(PlannerStatus::Solved), "solved");
+  EXPECT_EQ(plannerStatusName(PlannerStatus::TimeLimit), "time_limit");
+  EXPECT_EQ(plannerStatusName(PlannerStatus::SampleLimit), "sample_limit");
+  EXPECT_EQ(plannerStatusName(PlannerStatus::InvalidStart), "invalid_start");
+  EXPECT_EQ(plannerStatusName(PlannerStatus::InvalidGoal), "invalid_goal");
+}
+
+}  // namespace
+}  // namespace pmdplan

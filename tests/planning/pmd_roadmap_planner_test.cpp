@@ -1,0 +1,267 @@
+#include "pmdplan/planning/pmd_roadmap_planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "pmdplan/planning/full_space_hand_sampler.hpp"
+#include "pmdplan/planning/path_smoothing.hpp"
+#include "pmdplan/planning/synergy_hand_sampler.hpp"
+#include "planning/toy_problem.hpp"
+
+namespace pmdplan {
+namespace {
+
+/// Wraps a sampler and records the dimension of every call.
+class RecordingHandSampler : public HandSampler {
+public:
+  explicit RecordingHandSampler(std::unique_ptr<HandSampler> inner, std::vector<int>& dimensions)
+      : inner_(std::move(inner)), dimensions_(dimensions) {}
+  int initialDimension() const override { return inner_->initialDimension(); }
+  int maxDimension() const override { return inner_->maxDimension(); }
+  void sample(int dimension, RandomSource& random, Configuration& q) const override {
+    dimensions_.push_back(dimension);
+    inner_->sample(dimension, random, q);
+  }
+  std::string name() const override { return inner_->name(); }
+
+private:
+  std::unique_ptr<HandSampler> inner_;
+  std::vector<int>& dimensions_;
+};
+
+/// A planner with its validators, for one toy run.
+struct ToyRun {
+  toy::WallStateValidator stateValidator;
+  toy::WallMotionValidator motionValidator;
+  PmdRoadmapPlanner planner;
+
+  explicit ToyRun(PlannerParameters parameters, HandSamplingMode mode = HandSamplingMode::Synergy,
+                  toy::Wall wall = {})
+      : stateValidator(wall),
+        motionValidator(wall),
+        planner(toy::space(), stateValidator, motionValidator, makeSampler(mode), parameters) {
+    planner.setStartAndGoal(toy::start(), toy::goal());
+  }
+
+  static std::unique_ptr<HandSampler> makeSampler(HandSamplingMode mode) {
+    const SynergyModel model = toy::synergyModel();
+    return makeHandSampler(mode, toy::space(), &model);
+  }
+};
+
+PlannerParameters withSeed(std::uint64_t seed, HandSamplingMode mode = HandSamplingMode::Synergy) {
+  PlannerParameters parameters = PlannerParameters::defaultsFor(mode);
+  parameters.seed = seed;
+  parameters.timeLimit = 60.0;
+  return parameters;
+}
+
+TEST(PmdRoadmapPlanner, SolvesTheNarrowPassage) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    ToyRun run(withSeed(seed));
+    ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
+    const std::vector<Configuration>& path = run.planner.path();
+    ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
+    EXPECT_EQ(path.front(), toy::start());
+    EXPECT_EQ(path.back(), toy::goal());
+    EXPECT_TRUE(toy::densePathIsFree(path)) << "seed " << seed;
+    EXPECT_TRUE(toy::densePathIsFree(run.planner.unsmoothedPath())) << "seed " << seed;
+    for (const Configuration& q : path) EXPECT_TRUE(toy::space().withinLimits(q, 0.0));
+
+    const PlanningStatistics& stats = run.planner.statistics();
+    EXPECT_TRUE(stats.solved());
+    EXPECT_EQ(stats.pathNodes, path.size());
+    EXPECT_EQ(stats.pathNodesBeforeSmoothing, run.planner.unsmoothedPath().size());
+    EXPECT_LE(stats.pathLength, stats.pathLengthBeforeSmoothing);
+    EXPECT_NEAR(stats.pathLength, pathLength(path, toy::space()), 1e-12);
+    EXPECT_EQ(stats.roadmapNodes, run.planner.roadmap().nodeCount());
+    EXPECT_GE(stats.samples, stats.roadmapNodes - 2);
+    EXPECT_GE(stats.handArmSamples, stats.roadmapNodes - 2);
+    EXPECT_GE(stats.maxTrials, 1u);
+    EXPECT_LE(stats.maxTrials, 100u);
+    EXPECT_EQ(stats.finalArmHalfSize, 0.001) << "the first sweep suffices here";
+    EXPECT_EQ(stats.stateChecks, run.stateValidator.checkCount());
+    EXPECT_EQ(stats.motionChecks, run.motionValidator.statesChecked());
+    std::size_t byDimension = 0;
+    for (const auto& [dimension, count] : stats.nodesByHandDimension) {
+      EXPECT_GE(dimension, 2);
+      EXPECT_LE(dimension, 4);
+      byDimension += count;
+    }
+    EXPECT_EQ(byDimension, stats.roadmapNodes - 2);
+  }
+}
+
+TEST(PmdRoadmapPlanner, TheSameSeedGivesTheSamePath) {
+  ToyRun first(withSeed(17));
+  ToyRun second(withSeed(17));
+  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
+  ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
+  EXPECT_EQ(first.planner.path(), second.planner.path());
+  EXPECT_EQ(first.planner.unsmoothedPath(), second.planner.unsmoothedPath());
+  const PlanningStatistics& a = first.planner.statistics();
+  const PlanningStatistics& b = second.planner.statistics();
+  EXPECT_EQ(a.samples, b.samples);
+  EXPECT_EQ(a.handArmSamples, b.handArmSamples);
+  EXPECT_EQ(a.roadmapNodes, b.roadmapNodes);
+  EXPECT_EQ(a.roadmapEdges, b.roadmapEdges);
+  EXPECT_EQ(a.nodesByHandDimension, b.nodesByHandDimension);
+  EXPECT_EQ(a.stateChecks, b.stateChecks);
+  EXPECT_EQ(a.motionChecks, b.motionChecks);
+
+  // solve() again on the same planner repeats the run from the seed.
+  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
+  EXPECT_EQ(first.planner.path(), second.planner.path());
+
+  ToyRun other(withSeed(18));
+  ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
+  EXPECT_NE(other.planner.unsmoothedPath(), first.planner.unsmoothedPath());
+}
+
+TEST(PmdRoadmapPlanner, AProgressCallbackOnlyObserves) {
+  ToyRun quiet(withSeed(5));
+  ToyRun watched(withSeed(5));
+  std::size_t calls = 0;
+  std::size_t lastNodes = 0;
+  watched.planner.setProgressCallback([&](const PlannerProgress& progress) {
+    ++calls;
+    EXPECT_EQ(progress.sweep, 1u);
+    EXPECT_EQ(progress.hypercubes, 1025u);
+    EXPECT_LT(progress.hypercube, progress.hypercubes);
+    EXPECT_GE(progress.roadmapNodes, lastNodes);
+    lastNodes = progress.roadmapNodes;
+  });
+  ASSERT_EQ(quiet.planner.solve(), PlannerStatus::Solved);
+  ASSERT_EQ(watched.planner.solve(), PlannerStatus::Solved);
+  EXPECT_GT(calls, 0u);
+  EXPECT_EQ(quiet.planner.path(), watched.planner.path());
+}
+
+TEST(PmdRoadmapPlanner, TheFullSpaceSwitchSolvesWithWholeHandSamples) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    ToyRun run(withSeed(seed, HandSamplingMode::FullSpace), HandSamplingMode::FullSpace);
+    EXPECT_EQ(run.planner.handSampler().name(), "full");
+    EXPECT_EQ(run.planner.parameters().armTrials, 20);
+    EXPECT_EQ(run.planner.parameters().handTrials, 20);
+    ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
+    EXPECT_TRUE(toy::densePathIsFree(run.planner.path()));
+    const auto& byDimension = run.planner.statistics().nodesByHandDimension;
+    ASSERT_EQ(byDimension.size(), 1u);
+    EXPECT_EQ(byDimension.begin()->first, 4) << "every hand joint at once";
+    for (NodeIndex i = 2; i < run.planner.roadmap().nodeCount(); ++i)
+      EXPECT_EQ(run.planner.roadmap().node(i).handDimension, 4);
+  }
+}
+
+/// Start and goal free (the first two checks), every sample in collision.
+class NothingButTheEndsIsFree : public StateValidator {
+public:
+  bool isValid(const Configuration&) override { return ++checks_ <= 2; }
+  bool isArmValid(const Configuration&) override { return true; }
+  std::size_t checkCount() const override { return checks_; }
+
+private:
+  std::size_t checks_ = 0;
+};
+
+// Algorithm 4: every arm configuration starts at dimension 2 and each failed hand sample adds one,
+// up to the model's maximum (here thumb base + 3 PMDs = 4).
+TEST(PmdRoadmapPlanner, HandDimensionGrowsFromTwoToTheMaximum) {
+  NothingButTheEndsIsFree stateValidator;
+  toy::WallMotionValidator motionValidator;
+  const SynergyModel model = toy::synergyModel();
+  std::vector<int> recorded;
+  PlannerParameters parameters = withSeed(1);
+  parameters.maxSamples = 3;
+  PmdRoadmapPlanner planner(toy::space(), stateValidator, motionValidator,
+                            std::make_unique<RecordingHandSampler>(
+                                std::make_unique<SynergyHandSampler>(toy::space(), model), recorded),
+                            parameters);
+  planner.setStartAndGoal(toy::start(), toy::goal());
+  EXPECT_EQ(planner.solve(), PlannerStatus::SampleLimit);
+  const std::vector<int> perArmConfiguration = {2, 3, 4, 4, 4, 4, 4, 4, 4, 4};
+  ASSERT_EQ(recorded.size(), 3 * perArmConfiguration.size()) << "n_H hand samples for each of N arm samples";
+  for (std::size_t i = 0; i < recorded.size(); ++i)
+    EXPECT_EQ(recorded[i], perArmConfiguration[i % perArmConfiguration.size()]) << "hand sample " << i;
+  EXPECT_EQ(planner.statistics().samples, 3u);
+  EXPECT_EQ(planner.statistics().handArmSamples, 30u);
+  EXPECT_EQ(planner.statistics().roadmapNodes, 2u);
+}
+
+TEST(PmdRoadmapPlanner, NodesRecordTheDimensionThatMadeThem) {
+  ToyRun run(withSeed(4));
+  ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
+  std::map<int, std::size_t> counted;
+  for (NodeIndex i = 2; i < run.planner.roadmap().nodeCount(); ++i) ++counted[run.planner.roadmap().node(i).handDimension];
+  EXPECT_EQ(counted, run.planner.statistics().nodesByHandDimension);
+  EXPECT_EQ(run.planner.roadmap().node(0).handDimension, 0) << "c_ini";
+  EXPECT_EQ(run.planner.roadmap().node(1).handDimension, 0) << "c_goal";
+}
+
+TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheSampleLimit) {
+  PlannerParameters parameters = withSeed(3);
+  parameters.maxSamples = 5000;
+  ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
+  EXPECT_EQ(run.planner.solve(), PlannerStatus::SampleLimit);
+  EXPECT_EQ(run.planner.statistics().samples, 5000u);
+  EXPECT_TRUE(run.planner.path().empty());
+  EXPECT_FALSE(run.planner.statistics().solved());
+  EXPECT_GT(run.planner.statistics().sweeps, 1u) << "rho_a grows once a sweep fails";
+  EXPECT_GT(run.planner.statistics().finalArmHalfSize, 0.001);
+}
+
+TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheTimeLimit) {
+  PlannerParameters parameters = withSeed(3);
+  parameters.maxSamples = std::numeric_limits<std::size_t>::max();
+  parameters.timeLimit = 0.2;
+  ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
+  const auto began = std::chrono::steady_clock::now();
+  EXPECT_EQ(run.planner.solve(), PlannerStatus::TimeLimit);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  EXPECT_GE(run.planner.statistics().planningTime, 0.2);
+  EXPECT_LT(seconds, 10.0) << "the limit must actually stop the run";
+}
+
+TEST(PmdRoadmapPlanner, StartOrGoalInCollisionIsReported) {
+  ToyRun run(withSeed(1));
+  run.planner.setStartAndGoal(toy::fromUnit({0.5, 0.9, 0.3, 0.8, 0.8, 0.5}), toy::goal());
+  EXPECT_EQ(run.planner.solve(), PlannerStatus::InvalidStart);
+  run.planner.setStartAndGoal(toy::start(), toy::fromUnit({0.5, 0.9, 0.3, 0.8, 0.8, 0.5}));
+  EXPECT_EQ(run.planner.solve(), PlannerStatus::InvalidGoal);
+  EXPECT_EQ(run.planner.statistics().status, PlannerStatus::InvalidGoal);
+}
+
+TEST(PmdRoadmapPlanner, StartEqualToGoalIsATwoPointPath) {
+  ToyRun run(withSeed(1));
+  run.planner.setStartAndGoal(toy::start(), toy::start());
+  ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
+  EXPECT_EQ(run.planner.path(), (std::vector<Configuration>{toy::start(), toy::start()}));
+}
+
+TEST(PmdRoadmapPlanner, SetupRejectsMalformedProblems) {
+  ToyRun run(withSeed(1));
+  run.planner.setStartAndGoal(Eigen::VectorXd::Zero(3), toy::goal());
+  EXPECT_THROW(run.planner.setup(), std::invalid_argument);
+  Configuration outside = toy::start();
+  outside[0] = 5.0;
+  run.planner.setStartAndGoal(outside, toy::goal());
+  EXPECT_THROW(run.planner.solve(), std::invalid_argument);
+}
+
+TEST(PmdRoadmapPlanner, ClearDropsTheRun) {
+  ToyRun run(withSeed(2));
+  ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
+  run.planner.clear();
+  EXPECT_TRUE(run.planner.path().empty());
+  EXPECT_EQ(run.planner.roadmap().nodeCount(), 0u);
+  EXPECT_EQ(run.planner.statistics().status, PlannerStatus::NotRun);
+}
+
+}  // namespace
+}  // namespace pmdplan
