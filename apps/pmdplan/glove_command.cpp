@@ -51,7 +51,8 @@ int runSynth(const SynthOptions& o) {
   if (o.frames < 1) throw InputError("", "--frames", "expected a positive number of frames");
   const std::filesystem::path output = o.output;
   if (output.extension() != ".csv") throw InputError("", "-o", "the synthetic recording is written as CSV: give a .csv file name");
-  const std::filesystem::path calibrationPath = o.calibrationOutput.empty() ? calibrationBeside(output) : o.calibrationOutput;
+  const std::filesystem::path calibrationPath =
+      o.calibrationOutput.empty() ? calibrationBeside(output) : std::filesystem::path(o.calibrationOutput);
   const HandMapping mapping = loadHandMapping(o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping));
   SyntheticOperatorParameters parameters;
   parameters.frames = o.frames;

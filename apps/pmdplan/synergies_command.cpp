@@ -14,6 +14,7 @@
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
 #include "pmdplan/glove/glove_serial_stream.hpp"
+#include "pmdplan/io/synergy_plots.hpp"
 #include "pmdplan/model/robot_model.hpp"
 #include "pmdplan/synergy/figure7_joint_pairs.hpp"
 #include "pmdplan/synergy/graspit_eigengrasp_import.hpp"
@@ -36,6 +37,7 @@ struct Options {
   std::string graspit;
   std::vector<std::string> graspitJoints;
   std::string show;
+  std::string plots;
 };
 
 /// The robot's hand joints (its "hand" group): a built-in robot's name or a .urdf file (with its
@@ -112,8 +114,15 @@ void printModel(const SynergyModel& model) {
   }
 }
 
+/// --plots DIR: the figures (without postures, as from --show or an import, only the variance).
+void writePlots(const Options& o, const SynergyModel& model, const Eigen::MatrixXd& postures, const JointLimits& joints) {
+  if (o.plots.empty()) return;
+  for (const auto& file : writeSynergyPlots(o.plots, model, postures, joints)) std::cerr << "wrote " << file.string() << "\n";
+}
+
 int runShow(const Options& o) {
   const SynergyModel model = loadSynergyModel(o.show);
+  writePlots(o, model, {}, model.joints);
   if (o.json) {
     std::cout << modelJson(model).dump(2) << "\n";
     return 0;
@@ -128,6 +137,7 @@ int runGraspIt(const Options& o) {
     throw InputError("", "--joints", "GraspIt files carry no joint names: give --joints j1,j2,... (one robot joint per dimension)");
   const GraspItImport imported = importGraspItEigengrasps(o.graspit, o.graspitJoints, handJointsOf(o.robot));
   if (!o.output.empty()) saveSynergyModel(o.output, imported.model);
+  writePlots(o, imported.model, {}, imported.model.joints);
   if (o.json) {
     nlohmann::json out = modelJson(imported.model);
     out["notes"] = imported.notes;
@@ -166,6 +176,7 @@ int runRecording(const Options& o) {
   const RecordingAnalysis analysis = analyseRecording(recording, calibration, mapping, hand, fitOptions, provenance);
   const SynergyFit& fit = analysis.fit;
   if (!o.output.empty()) saveSynergyModel(o.output, fit.model);
+  if (!o.plots.empty()) writePlots(o, fit.model, mapToJoints(calibrate(recording, calibration), mapping, hand).postures, hand);
 
   const auto varying = [&](const std::string& name) -> Eigen::Index {
     for (std::size_t i = 0; i < fit.varyingJoints.size(); ++i)
@@ -259,6 +270,7 @@ const CommandRegistrar registrar{
       app.add_option("--from-graspit", o->graspit, "Import a GraspIt eigengrasp XML file instead of reading a recording");
       app.add_option("--joints", o->graspitJoints, "With --from-graspit: the robot joint of each dimension, in order")->delimiter(',');
       app.add_option("--show", o->show, "Check and print a synergy model file");
+      app.add_option("--plots", o->plots, "Write the figures as SVG into this folder (Fig. 10 variance; Fig. 7 joint pairs from a recording)");
       return [o] { return run(*o); };
     }};
 

@@ -15,11 +15,23 @@ struct PlacedGeometry {
   double radius = 0.0;     ///< encloses the geometry around pose.translation()
 };
 
+/// An obstacle with its world-aligned bounding box: large flat obstacles (floor, table) have huge
+/// bounding spheres, so robot spheres are tested against the box instead.
+struct PlacedObstacle : PlacedGeometry {
+  Eigen::Vector3d boxMin, boxMax;
+};
+
+/// A link's bounding sphere, centred among its shapes (in the link frame).
+struct LinkSphere {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+};
+
 struct ExactCollisionChecker::Geometry {
   std::vector<std::vector<PlacedGeometry>> links;  ///< per link
-  std::vector<double> linkRadius;                 ///< about the link origin
+  std::vector<LinkSphere> linkSpheres;
   std::vector<std::pair<int, int>> selfPairs;      ///< enabled link pairs that both have geometry
-  std::vector<PlacedGeometry> obstacles;
+  std::vector<PlacedObstacle> obstacles;
   fcl::CollisionRequestd request;
   fcl::DistanceRequestd distanceRequest;
 };
@@ -28,6 +40,11 @@ namespace {
 
 bool spheresApart(const Eigen::Vector3d& a, double ra, const Eigen::Vector3d& b, double rb) {
   return (a - b).squaredNorm() > (ra + rb) * (ra + rb);
+}
+
+bool sphereOutsideBox(const Eigen::Vector3d& centre, double radius, const PlacedObstacle& box) {
+  const Eigen::Vector3d nearest = centre.cwiseMax(box.boxMin).cwiseMin(box.boxMax);
+  return (centre - nearest).squaredNorm() > radius * radius;
 }
 
 bool shapesCollide(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, const PlacedGeometry& b,
@@ -50,14 +67,23 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
 
   const auto& links = model_.links();
   g.links.resize(links.size());
-  g.linkRadius.assign(links.size(), 0.0);
+  g.linkSpheres.resize(links.size());
   for (std::size_t l = 0; l < links.size(); ++l) {
     for (const auto& placed : links[l].collisionShapes) {
       auto geometry = makeFclGeometry(placed.shape);
-      const double r = enclosingRadius(placed.shape, *geometry);
-      g.links[l].push_back({geometry, placed.pose, r});
-      g.linkRadius[l] = std::max(g.linkRadius[l], placed.pose.translation().norm() + r);
+      g.links[l].push_back({geometry, placed.pose, enclosingRadius(placed.shape, *geometry)});
     }
+    if (g.links[l].empty()) continue;
+    // Centre: the middle of the shapes' bounding-sphere box; radius: what reaches every shape.
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(1e300), high = -low;
+    for (const auto& shape : g.links[l]) {
+      low = low.cwiseMin((shape.pose.translation().array() - shape.radius).matrix());
+      high = high.cwiseMax((shape.pose.translation().array() + shape.radius).matrix());
+    }
+    auto& sphere = g.linkSpheres[l];
+    sphere.centre = 0.5 * (low + high);
+    for (const auto& shape : g.links[l])
+      sphere.radius = std::max(sphere.radius, (shape.pose.translation() - sphere.centre).norm() + shape.radius);
   }
   for (std::size_t a = 0; a < links.size(); ++a)
     for (std::size_t b = a + 1; b < links.size(); ++b)
@@ -65,8 +91,22 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
           !model_.isCollisionPairDisabled(static_cast<int>(a), static_cast<int>(b)))
         g.selfPairs.emplace_back(static_cast<int>(a), static_cast<int>(b));
   for (const auto& obstacle : task.obstacles) {
-    auto geometry = makeFclGeometry(obstacle.shape);
-    g.obstacles.push_back({geometry, obstacle.pose, enclosingRadius(obstacle.shape, *geometry)});
+    PlacedObstacle placed;
+    placed.geometry = makeFclGeometry(obstacle.shape);
+    placed.pose = obstacle.pose;
+    placed.radius = enclosingRadius(obstacle.shape, *placed.geometry);
+    const fcl::AABBd& box = placed.geometry->aabb_local;
+    // World box of the rotated local box: its eight corners.
+    placed.boxMin = Eigen::Vector3d::Constant(1e300);
+    placed.boxMax = -placed.boxMin;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Eigen::Vector3d local((corner & 1) ? box.max_.x() : box.min_.x(), (corner & 2) ? box.max_.y() : box.min_.y(),
+                                  (corner & 4) ? box.max_.z() : box.min_.z());
+      const Eigen::Vector3d world = obstacle.pose * local;
+      placed.boxMin = placed.boxMin.cwiseMin(world);
+      placed.boxMax = placed.boxMax.cwiseMax(world);
+    }
+    g.obstacles.push_back(std::move(placed));
   }
 
   // Links whose pose depends on arm joints only (the hand's palm included): Algorithm 1's arm check.
@@ -96,9 +136,9 @@ bool ExactCollisionChecker::selfCollides(const LinkPoses& poses, bool armOnly, C
     if (armOnly && !(armLink_[static_cast<std::size_t>(a)] && armLink_[static_cast<std::size_t>(b)])) continue;
     const auto& pa = poses[static_cast<std::size_t>(a)];
     const auto& pb = poses[static_cast<std::size_t>(b)];
-    if (spheresApart(pa.translation(), g.linkRadius[static_cast<std::size_t>(a)], pb.translation(),
-                     g.linkRadius[static_cast<std::size_t>(b)]))
-      continue;
+    const auto& sa = g.linkSpheres[static_cast<std::size_t>(a)];
+    const auto& sb = g.linkSpheres[static_cast<std::size_t>(b)];
+    if (spheresApart(pa * sa.centre, sa.radius, pb * sb.centre, sb.radius)) continue;
     bool pairCollides = false;
     for (const auto& sa : g.links[static_cast<std::size_t>(a)]) {
       for (const auto& sb : g.links[static_cast<std::size_t>(b)])
@@ -122,11 +162,14 @@ bool ExactCollisionChecker::environmentCollides(const LinkPoses& poses, Collisio
   for (std::size_t l = 0; l < g.links.size(); ++l) {
     if (g.links[l].empty()) continue;
     const auto& pose = poses[l];
+    const Eigen::Vector3d centre = pose * g.linkSpheres[l].centre;
     for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
       const auto& obstacle = g.obstacles[o];
-      if (spheresApart(pose.translation(), g.linkRadius[l], obstacle.pose.translation(), obstacle.radius)) continue;
+      if (sphereOutsideBox(centre, g.linkSpheres[l].radius, obstacle)) continue;
       const bool hit = std::any_of(g.links[l].begin(), g.links[l].end(), [&](const PlacedGeometry& shape) {
-        return shapesCollide(shape, pose * shape.pose, obstacle, obstacle.pose, g.request);
+        const Eigen::Isometry3d shapePose = pose * shape.pose;
+        return !sphereOutsideBox(shapePose.translation(), shape.radius, obstacle) &&
+               shapesCollide(shape, shapePose, obstacle, obstacle.pose, g.request);
       });
       if (!hit) continue;
       collides = true;

@@ -18,7 +18,9 @@ ArmSegmentSampler::ArmSegmentSampler(const PlanningSpace& space, const Configura
     startUnit_[k] = joint.normalise(start[i]);
     goalUnit_[k] = joint.normalise(goal[i]);
   }
-  segmentLength_ = (goalUnit_ - startUnit_).norm();
+  double sum = 0.0;  // index order, not Eigen's SIMD-width-dependent norm(): same STEPS everywhere
+  for (Eigen::Index k = 0; k < n; ++k) sum += (goalUnit_[k] - startUnit_[k]) * (goalUnit_[k] - startUnit_[k]);
+  segmentLength_ = std::sqrt(sum);
 }
 
 void ArmSegmentSampler::draw(double step, double halfSize, RandomSource& random, Configuration& q) const {

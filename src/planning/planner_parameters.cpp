@@ -21,6 +21,9 @@ void PlannerParameters::check() const {
     throw InputError("", "rho-a", "must be a positive number (normalised joint units), got " +
                                       std::to_string(initialArmHalfSize));
   if (neighbourCount < 1) throw InputError("", "neighbours", "must be at least 1");
+  if (!(neighbourThresholdFactor > 0.0) || !std::isfinite(neighbourThresholdFactor))
+    throw InputError("", "neighbour-threshold", "must be a positive factor of the start-goal distance, got " +
+                                                    std::to_string(neighbourThresholdFactor));
   if (armTrials < 1) throw InputError("", "arm-trials", "must be at least 1, got " + std::to_string(armTrials));
   if (handTrials < 1) throw InputError("", "hand-trials", "must be at least 1, got " + std::to_string(handTrials));
   if (maxSamples < 1) throw InputError("", "max-samples", "must be at least 1");

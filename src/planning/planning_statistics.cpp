@@ -14,4 +14,11 @@ std::string plannerStatusName(PlannerStatus status) {
   return "unknown";
 }
 
+std::optional<PlannerStatus> parsePlannerStatus(const std::string& name) {
+  for (const PlannerStatus status : {PlannerStatus::NotRun, PlannerStatus::Solved, PlannerStatus::SampleLimit,
+                                     PlannerStatus::TimeLimit, PlannerStatus::InvalidStart, PlannerStatus::InvalidGoal})
+    if (plannerStatusName(status) == name) return status;
+  return std::nullopt;
+}
+
 }  // namespace pmdplan

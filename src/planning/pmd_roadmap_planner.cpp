@@ -43,9 +43,10 @@ void PmdRoadmapPlanner::setup() {
       throw std::invalid_argument(std::string("PmdRoadmapPlanner: the ") + which + " is outside the joint limits");
   }
   armSampler_.emplace(space_, start_, goal_);
-  // FINDNEIGHBORS' threshold: the start-goal distance, in the same normalised full space as all
-  // other distances (DESIGN.md).
-  neighbourThreshold_ = space_.distance(start_, goal_);
+  // FINDNEIGHBORS' threshold: the start-goal distance (times a factor, 1 in the paper), in the
+  // same normalised full space as all other distances (DESIGN.md).
+  startGoalDistance_ = space_.distance(start_, goal_);
+  neighbourThreshold_ = parameters_.neighbourThresholdFactor * startGoalDistance_;
 }
 
 void PmdRoadmapPlanner::clear() {
@@ -59,12 +60,14 @@ void PmdRoadmapPlanner::clear() {
 PlannerStatus PmdRoadmapPlanner::solve() {
   setup();
   beginRun();
+  ++statistics_.stateChecks;
   if (!stateValidator_.isValid(start_)) return endRun(PlannerStatus::InvalidStart);
+  ++statistics_.stateChecks;
   if (!stateValidator_.isValid(goal_)) return endRun(PlannerStatus::InvalidGoal);
 
   startNode_ = addNode(start_, 0.0, 0);
   goalNode_ = addNode(goal_, 1.0, 0);
-  if (neighbourThreshold_ == 0.0) {  // c_ini = c_goal: nothing to plan, and no neighbour could be found.
+  if (startGoalDistance_ == 0.0) {  // c_ini = c_goal: nothing to plan, and no neighbour could be found.
     roadmap_.addEdge(startNode_, goalNode_);
     return findPath();
   }
@@ -72,7 +75,11 @@ PlannerStatus PmdRoadmapPlanner::solve() {
 
   double rho = parameters_.initialArmHalfSize;
   for (std::size_t k = 1;; ++k) {
-    rho = static_cast<double>(k) * rho;
+    // rho_a = k·rho_a (or k·rho_a(1), see ArmBoxGrowth), capped at 1: a box of that half-size
+    // around any point of the segment already covers the whole normalised arm box, and k! would
+    // overflow after ~170 fruitless sweeps.
+    const double grown = parameters_.armBoxGrowth == ArmBoxGrowth::Factorial ? rho : parameters_.initialArmHalfSize;
+    rho = std::min(static_cast<double>(k) * grown, 1.0);
     statistics_.sweeps = k;
     statistics_.finalArmHalfSize = rho;
     const std::size_t maxsteps = segmentIntervals(armSampler_->segmentLength(), rho);
@@ -103,12 +110,14 @@ PmdRoadmapPlanner::HypercubeOutcome PmdRoadmapPlanner::sampleHypercube(double st
     if (statistics_.samples >= parameters_.maxSamples) return {std::nullopt, PlannerStatus::SampleLimit};
     if (timeIsUp()) return {std::nullopt, PlannerStatus::TimeLimit};
     ++statistics_.samples;
+    ++statistics_.stateChecks;
     if (!armSampler_->sample(step, armHalfSize, random_, stateValidator_, q)) continue;
     int dimSch = handSampler_->initialDimension();
     for (int h = 0; h < parameters_.handTrials; ++h) {
       if (timeIsUp()) return {std::nullopt, PlannerStatus::TimeLimit};
       handSampler_->sample(dimSch, random_, q);
       ++statistics_.handArmSamples;
+      ++statistics_.stateChecks;
       ++trials;
       if (stateValidator_.isValid(q)) {
         statistics_.maxTrials = std::max(statistics_.maxTrials, trials);
@@ -154,7 +163,6 @@ void PmdRoadmapPlanner::beginRun() {
   deadline_.reset();
   if (std::isfinite(parameters_.timeLimit))
     deadline_ = began_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(parameters_.timeLimit));
-  stateChecksAtStart_ = stateValidator_.checkCount();
   motionChecksAtStart_ = motionValidator_.statesChecked();
 }
 
@@ -163,7 +171,6 @@ PlannerStatus PmdRoadmapPlanner::endRun(PlannerStatus status) {
   if (status != PlannerStatus::Solved) statistics_.planningTime = elapsedSeconds();
   statistics_.roadmapNodes = roadmap_.nodeCount();
   statistics_.roadmapEdges = roadmap_.edgeCount();
-  statistics_.stateChecks = stateValidator_.checkCount() - stateChecksAtStart_;
   statistics_.motionChecks = motionValidator_.statesChecked() - motionChecksAtStart_;
   return status;
 }

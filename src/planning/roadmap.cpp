@@ -1,5 +1,6 @@
 #include "pmdplan/planning/roadmap.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -26,7 +27,15 @@ void Roadmap::addEdge(NodeIndex a, NodeIndex b) {
   ++edgeCount_;
 }
 
-double Roadmap::distance(NodeIndex a, NodeIndex b) const { return (nodes_[a].unit - nodes_[b].unit).norm(); }
+double Roadmap::distance(NodeIndex a, NodeIndex b) const {
+  // A plain loop in index order: Eigen's vectorised norm() sums in an order that depends on the
+  // SIMD width, and a last-bit difference could reorder neighbours on another machine.
+  const Eigen::VectorXd& u = nodes_[a].unit;
+  const Eigen::VectorXd& v = nodes_[b].unit;
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < u.size(); ++i) sum += (u[i] - v[i]) * (u[i] - v[i]);
+  return std::sqrt(sum);
+}
 
 void Roadmap::clear() {
   nodes_.clear();

@@ -83,7 +83,11 @@ void SynergyHandSampler::sample(int dimension, RandomSource& random, Configurati
   Eigen::VectorXd coefficients(pmds);
   for (int k = 0; k < pmds; ++k) coefficients[k] = random.uniform(-halfWidths_[k], halfWidths_[k]);
 
-  Eigen::VectorXd unit = mean_ + directions_.leftCols(pmds) * coefficients;
+  // b + E'·s summed in a fixed order (not Eigen's vectorised product), so every platform agrees
+  // to the last bit.
+  Eigen::VectorXd unit = mean_;
+  for (int k = 0; k < pmds; ++k)
+    for (Eigen::Index j = 0; j < unit.size(); ++j) unit[j] += directions_(j, k) * coefficients[k];
   for (int k = 0; k < ownAxes; ++k) unit[ownAxisSlots_[static_cast<std::size_t>(k)]] = ownValues[k];
 
   for (std::size_t slot = 0; slot < configIndex_.size(); ++slot) {

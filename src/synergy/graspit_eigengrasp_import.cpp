@@ -125,7 +125,7 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
       const JointLimit& joint = handJoints[static_cast<std::size_t>(jointOf[static_cast<std::size_t>(d)])];
       const double unit = joint.normalise(values(d));
       if (unit < -1e-9 || unit > 1 + 1e-9)
-        throw InputError(file, lineOf(origin) + " (ORIGIN.d" + std::to_string(d) + ")",
+        throw InputError(file, lineOf(origin->FirstChildElement("DimVals")) + " (ORIGIN.d" + std::to_string(d) + ")",
                          "origin " + exactNumberText(values(d)) + " rad is beyond the limits [" +
                              exactNumberText(joint.lower) + ", " + exactNumberText(joint.upper) + "] of " + joint.name);
       model.mean(jointOf[static_cast<std::size_t>(d)]) = std::clamp(unit, 0.0, 1.0);

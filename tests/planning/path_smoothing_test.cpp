@@ -102,8 +102,13 @@ TEST(PathSmoothing, NeverLengthensAPath) {
       const double y = random.uniform01();
       motion.boxes.push_back({x, y, x + 0.05 + 0.2 * random.uniform01(), y + 0.05 + 0.2 * random.uniform01()});
     }
-    // A random walk whose every step is free (steps that collide are redrawn).
-    std::vector<Configuration> path = {Eigen::Vector2d(random.uniform01(), random.uniform01())};
+    // A random walk whose every step is free (steps that collide are redrawn), from a start
+    // outside every box (a zero-length segment is a point test).
+    std::vector<Configuration> path;
+    while (path.empty()) {
+      const Eigen::Vector2d first(random.uniform01(), random.uniform01());
+      if (motion.isValid(first, first)) path.push_back(first);
+    }
     while (path.size() < 12) {
       const Eigen::Vector2d next(random.uniform01(), random.uniform01());
       if (motion.isValid(path.back(), next)) path.push_back(next);

@@ -216,6 +216,57 @@ TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheSampleLimit) {
   EXPECT_GT(run.planner.statistics().finalArmHalfSize, 0.001);
 }
 
+/// Start and goal free, every arm draw in self-collision: sweeps stay cheap and never narrow.
+class ArmNeverFree : public StateValidator {
+public:
+  bool isValid(const Configuration&) override { return ++checks_, true; }
+  bool isArmValid(const Configuration&) override { return ++checks_, false; }
+  std::size_t checkCount() const override { return checks_; }
+
+private:
+  std::size_t checks_ = 0;
+};
+
+// Algorithm 4: rho_a = k·rho_a per failed sweep (1, 2, 6, 24, 120, 720 × rho_a, capped at 1), or
+// k·rho_a(1) with the linear reading; every sweep starts from the whole segment.
+TEST(PmdRoadmapPlanner, ArmBoxesGrowSweepBySweep) {
+  for (const ArmBoxGrowth growth : {ArmBoxGrowth::Factorial, ArmBoxGrowth::Linear}) {
+    PlannerParameters parameters = withSeed(3);
+    parameters.armBoxGrowth = growth;
+    parameters.maxSamples = 40000;
+    ArmNeverFree stateValidator;
+    toy::WallMotionValidator motionValidator;
+    const SynergyModel model = toy::synergyModel();
+    PmdRoadmapPlanner planner(toy::space(), stateValidator, motionValidator,
+                              makeHandSampler(HandSamplingMode::Synergy, toy::space(), &model), parameters);
+    planner.setStartAndGoal(toy::start(), toy::goal());
+    std::vector<double> halfSizes;
+    std::vector<std::size_t> hypercubes;
+    planner.setProgressCallback([&](const PlannerProgress& progress) {
+      if (progress.sweep > halfSizes.size()) {
+        EXPECT_EQ(progress.sweep, halfSizes.size() + 1);
+        EXPECT_EQ(progress.hypercube, 0u) << "a sweep starts at c_ini's hypercube";
+        EXPECT_EQ(progress.searchRange.low, 0.0);
+        EXPECT_EQ(progress.searchRange.high, 1.0);
+        halfSizes.push_back(progress.armHalfSize);
+        hypercubes.push_back(progress.hypercubes);
+      }
+    });
+    EXPECT_EQ(planner.solve(), PlannerStatus::SampleLimit);
+    ASSERT_GE(halfSizes.size(), 8u);
+    const std::vector<double> expected = growth == ArmBoxGrowth::Factorial
+                                             ? std::vector<double>{0.001, 0.002, 0.006, 0.024, 0.12, 0.72, 1.0, 1.0}
+                                             : std::vector<double>{0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.007, 0.008};
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      EXPECT_NEAR(halfSizes[k], expected[k], 1e-15) << "sweep " << k + 1;
+      // STEPS: the hypercube centres are at most rho_a apart along the 0.8-long arm segment.
+      EXPECT_LE(0.8 / static_cast<double>(hypercubes[k] - 1), halfSizes[k]);
+    }
+    EXPECT_EQ(planner.statistics().finalArmHalfSize, halfSizes.back());
+    EXPECT_EQ(planner.statistics().sweeps, halfSizes.size());
+  }
+}
+
 TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheTimeLimit) {
   PlannerParameters parameters = withSeed(3);
   parameters.maxSamples = std::numeric_limits<std::size_t>::max();
@@ -252,6 +303,26 @@ TEST(PmdRoadmapPlanner, SetupRejectsMalformedProblems) {
   outside[0] = 5.0;
   run.planner.setStartAndGoal(outside, toy::goal());
   EXPECT_THROW(run.planner.solve(), std::invalid_argument);
+}
+
+// The threshold bounds every edge: no roadmap edge is longer than factor · d(c_ini, c_goal),
+// except the edges to a forced neighbour.
+TEST(PmdRoadmapPlanner, EdgesRespectTheNeighbourThreshold) {
+  for (const double factor : {0.5, 1.0, 3.0}) {
+    PlannerParameters parameters = withSeed(6);
+    parameters.neighbourThresholdFactor = factor;
+    ToyRun run(parameters);
+    run.planner.solve();
+    const Roadmap& roadmap = run.planner.roadmap();
+    const double threshold = factor * toy::space().distance(toy::start(), toy::goal());
+    for (NodeIndex a = 0; a < roadmap.nodeCount(); ++a)
+      for (const RoadmapEdge& edge : roadmap.edges(a)) {
+        const NodeIndex b = edge.target;
+        const bool forced = (a == 0 && roadmap.node(b).step == 0.0) || (b == 0 && roadmap.node(a).step == 0.0) ||
+                            (a == 1 && roadmap.node(b).step == 1.0) || (b == 1 && roadmap.node(a).step == 1.0);
+        if (!forced) EXPECT_LE(edge.length, threshold) << "factor " << factor;
+      }
+  }
 }
 
 TEST(PmdRoadmapPlanner, ClearDropsTheRun) {

@@ -3,11 +3,12 @@
 //
 // Arm: 2 joints, hand: thumb_base + 3 fingers (6 joints). In normalised units u, a wall fills the
 // slab 0.45 <= u_shoulder <= 0.55; inside it a configuration is free only in the passage:
-// |u_elbow - 0.5| <= 0.05, the thumb tucked (u_thumb <= 0.5) and the hand closed
-// (u_a + u_b <= 0.6). The start and the goal stand on either side with the hand open, so the path
-// has to close the hand - along PMD 1 - to get through. The passage set is convex, so a straight
-// segment is free exactly when the points where it enters and leaves the slab are: the motion
-// check is exact, not sampled.
+// |u_elbow - 0.5| <= 0.05, the thumb tucked (u_thumb <= 0.5), fingers a and b closed together
+// (u_a + u_b <= 0.6, |u_a - u_b| <= 0.05) and finger c near its middle (|u_c - 0.5| <= 0.05).
+// The start and the goal stand on either side with the hand open, so the path has to close the
+// hand to get through: easy along PMD 1 (which moves a and b together), rare for uniform hand
+// samples (about 1 in 700). The passage set is convex, so a straight segment is free exactly when
+// the points where it enters and leaves the slab are: the motion check is exact, not sampled.
 #include <cmath>
 #include <cstddef>
 #include <utility>
@@ -63,7 +64,8 @@ struct Wall {
 
   bool inSlab(const Eigen::VectorXd& u) const { return u[0] >= 0.45 && u[0] <= 0.55; }
   bool inPassage(const Eigen::VectorXd& u) const {
-    return passageOpen && std::abs(u[1] - 0.5) <= 0.05 && u[2] <= 0.5 && u[3] + u[4] <= 0.6;
+    return passageOpen && std::abs(u[1] - 0.5) <= 0.05 && u[2] <= 0.5 && u[3] + u[4] <= 0.6 &&
+           std::abs(u[3] - u[4]) <= 0.05 && std::abs(u[5] - 0.5) <= 0.05;
   }
   bool armFree(const Eigen::VectorXd& u) const { return u[1] <= 0.95; }
   bool free(const Eigen::VectorXd& u) const { return armFree(u) && (!inSlab(u) || inPassage(u)); }

@@ -7,12 +7,22 @@
 
 namespace pmdplan {
 
+/// How Algorithm 4's line "rho_a = k·rho_a; k = k + 1" grows the arm boxes from sweep to sweep.
+enum class ArmBoxGrowth {
+  Factorial,  ///< rho_a(k) = k·rho_a(k-1): 1, 2, 6, 24, 120 × rho_a (the line read literally; DESIGN.md)
+  Linear,     ///< rho_a(k) = k·rho_a(1): 1, 2, 3, 4 × rho_a (the other reading; the authors' Kautham code)
+};
+
 struct PlannerParameters {
   /// rho_a: initial half-size of the arm hypercubes, normalised arm-joint units (Table 3: 0.001).
-  /// Sweep k uses rho_a(k) = k·rho_a(k-1), as in Algorithm 4.
+  /// Sweep k uses rho_a(k) = k·rho_a(k-1), as in Algorithm 4, capped at 1 (the whole arm box).
   double initialArmHalfSize = 0.001;
+  ArmBoxGrowth armBoxGrowth = ArmBoxGrowth::Factorial;
   /// K: most neighbours a new sample is connected to (Table 3: 10).
   std::size_t neighbourCount = 10;
+  /// Neighbours lie within neighbourThresholdFactor · d(c_ini, c_goal), normalised full space
+  /// (Sect. 5.2 and DESIGN.md: factor 1; the authors' Kautham code uses 4).
+  double neighbourThresholdFactor = 1.0;
   /// n_A: arm configurations tried per hypercube (Table 3: 10; full-space baseline 20).
   int armTrials = 10;
   /// n_H: hand configurations tried per arm configuration (Table 3: 10; full-space baseline 20).
@@ -32,7 +42,8 @@ struct PlannerParameters {
   static PlannerParameters defaultsFor(HandSamplingMode mode);
 
   /// Throws InputError (no file; the field named as on the command line: "rho-a", "neighbours",
-  /// "arm-trials", "hand-trials", "max-samples", "time-limit") for values out of range.
+  /// "neighbour-threshold", "arm-trials", "hand-trials", "max-samples", "time-limit") for values out of
+  /// range.
   void check() const;
 };
 

@@ -2,6 +2,7 @@
 // What one planner run did (the paper's Table 2, plus path length and collision checks).
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace pmdplan {
@@ -17,6 +18,8 @@ enum class PlannerStatus {
 
 /// "not_run", "solved", "sample_limit", "time_limit", "invalid_start", "invalid_goal".
 std::string plannerStatusName(PlannerStatus status);
+/// Inverse of plannerStatusName; std::nullopt for anything else.
+std::optional<PlannerStatus> parsePlannerStatus(const std::string& name);
 
 struct PlanningStatistics {
   PlannerStatus status = PlannerStatus::NotRun;
@@ -46,9 +49,11 @@ struct PlanningStatistics {
   /// Lengths in normalised joint space (0 if not solved).
   double pathLength = 0.0;
   double pathLengthBeforeSmoothing = 0.0;
-  /// StateValidator::checkCount() during the run (samples, start and goal).
+  /// Configurations the planner itself checked: start, goal, arm draws (isArmValid) and hand-arm
+  /// draws (isValid). Counted by the planner, not read from StateValidator::checkCount(), because a
+  /// MotionValidator may check its states through the same StateValidator.
   std::size_t stateChecks = 0;
-  /// MotionValidator::statesChecked() during the run (edges, smoothing).
+  /// MotionValidator::statesChecked() during the run (roadmap edges and smoothing).
   std::size_t motionChecks = 0;
   /// stateChecks + motionChecks.
   std::size_t collisionChecks() const { return stateChecks + motionChecks; }

@@ -99,6 +99,7 @@ private:
   Configuration start_;
   Configuration goal_;
   std::optional<ArmSegmentSampler> armSampler_;
+  double startGoalDistance_ = 0.0;
   double neighbourThreshold_ = 0.0;
 
   RandomSource random_;
@@ -110,7 +111,6 @@ private:
   PlanningStatistics statistics_;
   Clock::time_point began_{};
   std::optional<Clock::time_point> deadline_;
-  std::size_t stateChecksAtStart_ = 0;
   std::size_t motionChecksAtStart_ = 0;
 };
 

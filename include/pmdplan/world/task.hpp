@@ -36,7 +36,12 @@ struct Task {
 
 /// Reads and validates a task file. Every problem is an InputError naming the file and the key:
 /// unknown keys, missing or duplicated joints, values outside the limits, NaN, unknown obstacle
-/// types, missing mesh files, an unloadable robot.
+/// types, missing mesh files, an unloadable robot. The field reads like `obstacles[2].cylinder.radius
+/// (line 14)`. Optional keys: description, target, rpy_deg (of base and obstacles, default 0 0 0)
+/// and mesh scale (default 1 1 1); `obstacles` may be []. `robot` is a built-in name unless it
+/// has a directory part or ends in .urdf (then relative to the task file, with the .srdf of the
+/// same stem beside it if present). Degrees are converted at load; a value that misses a joint
+/// limit by at most 1e-9 rad is taken as the limit, anything further out is an error.
 Task loadTask(const std::filesystem::path& file);
 
 /// A built-in task name (data/scenes/<name>.yaml) or a path.

@@ -1,0 +1,30 @@
+#pragma once
+// A minimal HTTP server for one folder on the loopback interface (`pmdplan view --serve`): GET and
+// HEAD of the folder's files, one request per connection, nothing outside the folder. Enough for
+// a browser on the same machine; not meant to face a network.
+#include <filesystem>
+
+namespace pmdplan {
+
+class StaticFileServer {
+public:
+  /// Binds 127.0.0.1:`port` (0: a free port the system picks). Throws InputError (field
+  /// "--serve") if the port is out of range or cannot be bound.
+  StaticFileServer(std::filesystem::path root, int port);
+  ~StaticFileServer();
+  StaticFileServer(const StaticFileServer&) = delete;
+  StaticFileServer& operator=(const StaticFileServer&) = delete;
+
+  int port() const { return port_; }
+  /// Answers requests until the process is stopped.
+  [[noreturn]] void serveForever();
+  /// Accepts and answers one request (used by tests).
+  void serveOne();
+
+private:
+  std::filesystem::path root_;
+  int socket_ = -1;
+  int port_ = 0;
+};
+
+}  // namespace pmdplan

@@ -1,0 +1,62 @@
+#pragma once
+// Everything the web viewer shows, as one JSON document (the viewer folder's viewer-data.js):
+//
+//   format "pmdplan-viewer-data", version 1, title
+//   sources   {path_file, task_file, synergy_file}                      file names only
+//   task      {name, description, target, base: {position, quaternion},
+//              obstacles: [{name, shape, position, quaternion}]}        metres; quaternion [x, y, z, w]
+//             shape: {type: box, size: [x, y, z]} | {type: cylinder, radius, length} (axis z)
+//                  | {type: sphere, radius} | {type: mesh, file, scale}  file relative to the folder
+//   robot     {name, palm_link, urdf (the URDF text), joint_names, lower, upper (active joints,
+//              rad), hand_joints, mimic: {joint: [source, multiplier, offset]}}
+//   path      {planner, seed, statistics, waypoint_count, state_spacing, states: [[rad ...]],
+//              waypoint_states: [state index of each waypoint]}
+//   synergies {provenance, joint_names, lower, upper, own_axis_joints, orthonormal, mean,
+//              directions: [[...]], sigma, variance_fraction (normalised units), planner_directions,
+//              readout: {own_axis, coefficients, distance_from_subspace}: one row per state}
+//             or null when the robot has no synergy model
+//
+// The numbers are those of the library (the viewer recomputes nothing it could get wrong): the
+// states are the path timeline, the readout comes from synergyReadout() for every state.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/path_timeline.hpp"
+#include "pmdplan/synergy/synergy_model.hpp"
+#include "pmdplan/world/task.hpp"
+
+namespace pmdplan {
+
+struct ViewerSources {
+  std::filesystem::path pathFile;
+  std::filesystem::path synergyFile;
+};
+
+struct ViewerDataParameters {
+  PathTimelineParameters timeline;
+  /// The PMDs the planner samples (thumb base + this many): the viewer's default for the
+  /// distance-from-subspace readout. Capped by the model's direction count.
+  int plannerDirections = 4;
+};
+
+/// A file the viewer folder needs besides the data (a mesh obstacle's geometry).
+struct ViewerFolderFile {
+  std::filesystem::path source;
+  std::string relativePath;
+};
+
+struct ViewerData {
+  nlohmann::ordered_json document;
+  std::vector<ViewerFolderFile> files;
+};
+
+/// Checks that the path and the synergy model fit the task's robot (InputError naming the path
+/// file or the model file otherwise, see pathConfigurations() and modelJointSlots()) and builds
+/// the document. `synergies` may be null (a robot without a model: no synergy panel).
+ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies, const ViewerSources& sources,
+                      const ViewerDataParameters& parameters = {});
+
+}  // namespace pmdplan

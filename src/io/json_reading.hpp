@@ -1,0 +1,33 @@
+#pragma once
+// Checked access to parsed JSON for the io readers: every mismatch is an InputError naming the
+// file and the full key path ("points[2].positions").
+#include <cstdint>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace pmdplan::json_reading {
+
+/// Where a value sits: the file and the key path to it.
+struct Place {
+  const std::string& file;
+  std::string field;
+
+  Place key(const std::string& name) const { return {file, field.empty() ? name : field + "." + name}; }
+  Place index(std::size_t i) const { return {file, field + "[" + std::to_string(i) + "]"}; }
+  [[noreturn]] void fail(const std::string& message) const;
+};
+
+const nlohmann::json& requireObject(const nlohmann::json& value, const Place& place);
+const nlohmann::json& requireArray(const nlohmann::json& value, const Place& place);
+/// Every key of `object` must be in `allowed`, and every key of `required` present.
+void checkKeys(const nlohmann::json& object, const Place& place, std::initializer_list<const char*> allowed,
+               std::initializer_list<const char*> required);
+/// The member `name`, which checkKeys has made sure exists.
+const nlohmann::json& member(const nlohmann::json& object, const char* name);
+
+std::string readString(const nlohmann::json& value, const Place& place);
+std::uint64_t readUnsigned(const nlohmann::json& value, const Place& place);
+double readFinite(const nlohmann::json& value, const Place& place);
+
+}  // namespace pmdplan::json_reading

@@ -1,0 +1,142 @@
+#include "pmdplan/io/static_file_server.hpp"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <sys/time.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "pmdplan/core/input_error.hpp"
+
+namespace pmdplan {
+namespace {
+
+std::string contentType(const std::filesystem::path& file) {
+  const std::string extension = file.extension().string();
+  if (extension == ".html") return "text/html; charset=utf-8";
+  if (extension == ".js" || extension == ".mjs") return "text/javascript; charset=utf-8";
+  if (extension == ".css") return "text/css; charset=utf-8";
+  if (extension == ".json") return "application/json";
+  if (extension == ".txt") return "text/plain; charset=utf-8";
+  if (extension == ".png") return "image/png";
+  if (extension == ".svg") return "image/svg+xml";
+  if (extension == ".urdf" || extension == ".xml" || extension == ".dae") return "application/xml";
+  return "application/octet-stream";
+}
+
+void sendAll(int connection, const std::string& bytes) {
+  std::size_t sent = 0;
+  while (sent < bytes.size()) {
+    const ssize_t n = ::send(connection, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+    if (n <= 0) return;  // the browser went away: nothing to tell it
+    sent += static_cast<std::size_t>(n);
+  }
+}
+
+std::string response(int status, const std::string& reason, const std::string& type, const std::string& body, bool withBody) {
+  std::ostringstream head;
+  head << "HTTP/1.1 " << status << " " << reason << "\r\n"
+       << "Content-Type: " << type << "\r\n"
+       << "Content-Length: " << body.size() << "\r\n"
+       << "Cache-Control: no-store\r\n"
+       << "Connection: close\r\n\r\n";
+  return head.str() + (withBody ? body : std::string());
+}
+
+/// "/a%20b/c.js?x" -> "a b/c.js"; false for a target to refuse.
+bool decodeTarget(const std::string& target, std::string& relative) {
+  std::string path = target.substr(0, target.find_first_of("?#"));
+  if (path.empty() || path.front() != '/') return false;
+  std::string decoded;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] == '%' && i + 2 < path.size() && std::isxdigit(static_cast<unsigned char>(path[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(path[i + 2]))) {
+      decoded += static_cast<char>(std::stoi(path.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      decoded += path[i];
+    }
+  }
+  if (decoded.find('\0') != std::string::npos) return false;
+  // Nothing outside the folder: no parent steps, no hidden files (the atomic writer's temporaries).
+  for (const auto& part : std::filesystem::path(decoded).relative_path())
+    if (part == ".." || (!part.empty() && part.string().front() == '.')) return false;
+  relative = decoded.substr(1);
+  if (relative.empty() || relative.back() == '/') relative += "index.html";
+  return true;
+}
+
+}  // namespace
+
+StaticFileServer::StaticFileServer(std::filesystem::path root, int port) : root_(std::move(root)) {
+  if (port < 0 || port > 65535) throw InputError("", "--serve", "expected a port number 0-65535 (0: any free port)");
+  socket_ = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (socket_ < 0) throw InputError("", "--serve", std::string("cannot open a socket: ") + std::strerror(errno));
+  const int yes = 1;
+  ::setsockopt(socket_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  if (::bind(socket_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(socket_, 16) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::close(socket_);
+    throw InputError("", "--serve", "cannot listen on 127.0.0.1:" + std::to_string(port) + " (" + reason +
+                                        "); pick another port, or 0 for any free one");
+  }
+  socklen_t length = sizeof address;
+  ::getsockname(socket_, reinterpret_cast<sockaddr*>(&address), &length);
+  port_ = ntohs(address.sin_port);
+}
+
+StaticFileServer::~StaticFileServer() {
+  if (socket_ >= 0) ::close(socket_);
+}
+
+void StaticFileServer::serveForever() {
+  for (;;) serveOne();
+}
+
+void StaticFileServer::serveOne() {
+  const int connection = ::accept(socket_, nullptr, nullptr);
+  if (connection < 0) return;
+  // A client that connects and says nothing must not hang the server for everyone else.
+  timeval timeout{5, 0};
+  ::setsockopt(connection, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
+  std::string request;
+  char buffer[4096];
+  while (request.find("\r\n\r\n") == std::string::npos && request.size() < 16384) {
+    const ssize_t n = ::recv(connection, buffer, sizeof buffer, 0);
+    if (n <= 0) break;
+    request.append(buffer, static_cast<std::size_t>(n));
+  }
+  std::istringstream line(request.substr(0, request.find("\r\n")));
+  std::string method, target;
+  line >> method >> target;
+  std::string relative;
+  if (method != "GET" && method != "HEAD") {
+    sendAll(connection, response(405, "Method Not Allowed", "text/plain", "only GET and HEAD\n", true));
+  } else if (!decodeTarget(target, relative)) {
+    sendAll(connection, response(403, "Forbidden", "text/plain", "outside the viewer folder\n", method == "GET"));
+  } else {
+    const std::filesystem::path file = root_ / relative;
+    std::ifstream in(file, std::ios::binary);
+    if (!std::filesystem::is_regular_file(file) || !in) {
+      sendAll(connection, response(404, "Not Found", "text/plain", "not found: " + relative + "\n", method == "GET"));
+    } else {
+      std::ostringstream body;
+      body << in.rdbuf();
+      sendAll(connection, response(200, "OK", contentType(file), body.str(), method == "GET"));
+    }
+  }
+  ::close(connection);
+}
+
+}  // namespace pmdplan

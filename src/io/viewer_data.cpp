@@ -1,0 +1,148 @@
+#include "pmdplan/io/viewer_data.hpp"
+
+#include <algorithm>
+#include <type_traits>
+
+#include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/io/path_robot_match.hpp"
+#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/statistics_json.hpp"
+#include "pmdplan/io/synergy_readout.hpp"
+
+namespace pmdplan {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json numbers(const Eigen::VectorXd& values) {
+  Json list = Json::array();
+  for (Eigen::Index i = 0; i < values.size(); ++i) list.push_back(values[i]);
+  return list;
+}
+
+Json poseJson(const Eigen::Isometry3d& pose) {
+  const Eigen::Quaterniond q(pose.linear());
+  return Json{{"position", numbers(pose.translation())}, {"quaternion", Json::array({q.x(), q.y(), q.z(), q.w()})}};
+}
+
+Json shapeJson(const Shape& shape, const std::string& meshFile) {
+  return std::visit(
+      [&](const auto& s) -> Json {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, BoxShape>) return Json{{"type", "box"}, {"size", numbers(s.size)}};
+        else if constexpr (std::is_same_v<T, CylinderShape>)
+          return Json{{"type", "cylinder"}, {"radius", s.radius}, {"length", s.length}};
+        else if constexpr (std::is_same_v<T, SphereShape>) return Json{{"type", "sphere"}, {"radius", s.radius}};
+        else return Json{{"type", "mesh"}, {"file", meshFile}, {"scale", numbers(s.scale)}};
+      },
+      shape);
+}
+
+Json taskJson(const Task& task, std::vector<ViewerFolderFile>& files) {
+  Json obstacles = Json::array();
+  for (std::size_t i = 0; i < task.obstacles.size(); ++i) {
+    const Obstacle& obstacle = task.obstacles[i];
+    std::string meshFile;
+    if (const auto* mesh = std::get_if<MeshShape>(&obstacle.shape)) {
+      // Numbered, so two obstacles with meshes of the same file name do not overwrite each other.
+      meshFile = "meshes/" + std::to_string(i) + "-" + mesh->file.filename().string();
+      files.push_back({mesh->file, meshFile});
+    }
+    Json item{{"name", obstacle.name}, {"shape", shapeJson(obstacle.shape, meshFile)}};
+    item.update(poseJson(obstacle.pose));
+    obstacles.push_back(std::move(item));
+  }
+  return Json{{"name", task.name},
+              {"description", task.description},
+              {"target", task.target ? Json(*task.target) : Json()},
+              {"base", poseJson(task.base)},
+              {"obstacles", std::move(obstacles)}};
+}
+
+Json robotJson(const RobotModel& robot) {
+  Json lower = Json::array(), upper = Json::array(), hand = Json::array(), mimic = Json::object();
+  for (const JointLimit& joint : robot.activeJoints()) {
+    lower.push_back(joint.lower);
+    upper.push_back(joint.upper);
+  }
+  if (robot.hasGroup("hand"))
+    for (const int index : robot.group("hand")) hand.push_back(robot.activeJoints()[static_cast<std::size_t>(index)].name);
+  for (const MimicRelation& relation : mimicRelations(robot))
+    mimic[relation.joint] = Json::array({relation.source, relation.multiplier, relation.offset});
+  const int palm = robot.palmLink();
+  return Json{{"name", robot.name()},
+              {"palm_link", palm >= 0 ? Json(robot.links()[static_cast<std::size_t>(palm)].name) : Json()},
+              {"urdf", readTextFile(robot.urdfPath())},
+              {"joint_names", robot.activeJointNames()},
+              {"lower", std::move(lower)},
+              {"upper", std::move(upper)},
+              {"hand_joints", std::move(hand)},
+              {"mimic", std::move(mimic)}};
+}
+
+Json synergiesJson(const SynergyModel& model, const std::vector<int>& slots, const PathTimeline& timeline,
+                   int plannerDirections) {
+  Json names = Json::array(), lower = Json::array(), upper = Json::array(), directions = Json::array();
+  for (const JointLimit& joint : model.joints) {
+    names.push_back(joint.name);
+    lower.push_back(joint.lower);
+    upper.push_back(joint.upper);
+  }
+  for (int k = 0; k < model.directionCount(); ++k) directions.push_back(numbers(model.directions.col(k)));
+  Json ownAxis = Json::array(), coefficients = Json::array(), distance = Json::array();
+  for (const Configuration& state : timeline.states) {
+    const SynergyReadout readout = synergyReadout(model, slots, state);
+    ownAxis.push_back(numbers(readout.ownAxis));
+    coefficients.push_back(numbers(readout.coefficients));
+    distance.push_back(numbers(readout.distanceFromSubspace));
+  }
+  return Json{{"provenance", model.provenance},
+              {"joint_names", std::move(names)},
+              {"lower", std::move(lower)},
+              {"upper", std::move(upper)},
+              {"own_axis_joints", model.ownAxisJoints},
+              {"orthonormal", model.orthonormal},
+              {"mean", numbers(model.mean)},
+              {"directions", std::move(directions)},
+              {"sigma", numbers(model.sigma)},
+              {"variance_fraction", numbers(model.varianceFraction)},
+              {"planner_directions", std::clamp(plannerDirections, 0, model.directionCount())},
+              {"readout", Json{{"own_axis", std::move(ownAxis)},
+                               {"coefficients", std::move(coefficients)},
+                               {"distance_from_subspace", std::move(distance)}}}};
+}
+
+}  // namespace
+
+ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies, const ViewerSources& sources,
+                      const ViewerDataParameters& parameters) {
+  const RobotModel& robot = *task.robot;
+  const std::vector<Configuration> waypoints = pathConfigurations(path, robot, sources.pathFile.string());
+  const std::vector<int> slots =
+      synergies ? modelJointSlots(*synergies, robot, sources.synergyFile.string()) : std::vector<int>{};
+  const PathTimeline timeline = pathTimeline(waypoints, robot, parameters.timeline);
+
+  ViewerData data;
+  Json states = Json::array();
+  for (const Configuration& state : timeline.states) states.push_back(numbers(state));
+  Json& document = data.document;
+  document["format"] = "pmdplan-viewer-data";
+  document["version"] = 1;
+  document["title"] = task.name + " - " + path.planner + " planner, seed " + std::to_string(path.seed);
+  document["sources"] = Json{{"path_file", sources.pathFile.filename().string()},
+                             {"task_file", task.file.filename().string()},
+                             {"synergy_file", synergies ? Json(sources.synergyFile.filename().string()) : Json()}};
+  document["task"] = taskJson(task, data.files);
+  document["robot"] = robotJson(robot);
+  document["path"] = Json{{"planner", path.planner},
+                          {"seed", path.seed},
+                          {"statistics", statisticsToJson(path.statistics, false)},
+                          {"waypoint_count", waypoints.size()},
+                          {"state_spacing", parameters.timeline.stateSpacing},
+                          {"states", std::move(states)},
+                          {"waypoint_states", timeline.waypointStates}};
+  document["synergies"] = synergies ? synergiesJson(*synergies, slots, timeline, parameters.plannerDirections) : Json();
+  return data;
+}
+
+}  // namespace pmdplan
