@@ -15,7 +15,7 @@ TEST(PlannerParameters, DefaultsAreTable3) {
   const PlannerParameters pmd = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   EXPECT_EQ(pmd.initialArmHalfSize, 0.001);
   EXPECT_EQ(pmd.neighbourCount, 10u);
-  EXPECT_EQ(pmd.neighbourThresholdFactor, 1.0) << "threshold d(c_ini, c_goal), Sect. 5.2";
+  EXPECT_EQ(pmd.neighbourThresholdFactor, 2.0) << "twice d(c_ini, c_goal): see planner_parameters.hpp";
   EXPECT_EQ(pmd.armTrials, 10);
   EXPECT_EQ(pmd.handTrials, 10);
   EXPECT_GE(pmd.maxSamples, 1'000'000u) << "N large: the time limit is the real bound";

@@ -20,9 +20,12 @@ struct PlannerParameters {
   ArmBoxGrowth armBoxGrowth = ArmBoxGrowth::Factorial;
   /// K: most neighbours a new sample is connected to (Table 3: 10).
   std::size_t neighbourCount = 10;
-  /// Neighbours lie within neighbourThresholdFactor · d(c_ini, c_goal), normalised full space
-  /// (Sect. 5.2 and DESIGN.md: factor 1; the authors' Kautham code uses 4).
-  double neighbourThresholdFactor = 1.0;
+  /// Neighbours lie within neighbourThresholdFactor · d(c_ini, c_goal), normalised full space.
+  /// Sect. 5.2 sets the radius to d(c_ini, c_goal) itself, but two PMD hand samples lie about
+  /// 0.9-1.0 apart in the normalised space while d(c_ini, c_goal) is 0.83 on can_on_table, so at
+  /// factor 1 most samples have no neighbour candidates and some runs stall; factor 2 connects them
+  /// (the authors' Kautham code uses 4).
+  double neighbourThresholdFactor = 2.0;
   /// n_A: arm configurations tried per hypercube (Table 3: 10; full-space baseline 20).
   int armTrials = 10;
   /// n_H: hand configurations tried per arm configuration (Table 3: 10; full-space baseline 20).

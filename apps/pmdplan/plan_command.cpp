@@ -1,0 +1,127 @@
+// `pmdplan plan [TASK]`: the paper's PMD roadmap planner (or its full-space baseline) on a task,
+// writing the path file. Exit 0 solved, 1 not solved within the limits, 2 bad input.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "command_registry.hpp"
+#include "pmdplan/collision/exact_collision_checker.hpp"
+#include "pmdplan/collision/segment_checker.hpp"
+#include "pmdplan/core/data_directory.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/progress_line.hpp"
+#include "pmdplan/io/json_text.hpp"
+#include "pmdplan/io/path_csv.hpp"
+#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/statistics_json.hpp"
+#include "pmdplan/planning/hand_sampling_mode.hpp"
+#include "pmdplan/planning/pmd_roadmap_planner.hpp"
+#include "pmdplan/planning/robot_planning_space.hpp"
+#include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/world/task.hpp"
+
+namespace pmdplan::cli {
+namespace {
+
+struct Options {
+  std::string task = "can_on_table";
+  std::string planner = "pmd";
+  std::string synergies;
+  std::uint64_t seed = 1;
+  double timeLimit = 60.0;
+  double toleranceMm = 1.0;
+  double neighbourThreshold = PlannerParameters{}.neighbourThresholdFactor;
+  std::string output;
+  std::string csv;
+  bool json = false;
+};
+
+std::string pairsText(const CollisionReport& report) {
+  std::string text;
+  for (const auto& [a, b] : report.pairs) text += (text.empty() ? "" : ", ") + a + " - " + b;
+  return text;
+}
+
+int run(const Options& o) {
+  const auto mode = parseHandSamplingMode(o.planner);
+  if (!mode) throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected pmd or full");
+  if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  const Task task = loadTaskByName(o.task);
+  ExactCollisionChecker checker(task);
+  for (const auto& [label, q] : {std::pair{"start", &task.start}, std::pair{"goal", &task.goal}}) {
+    const auto report = checker.check(*q);
+    if (!report.free())
+      throw InputError(task.file.string(), label, std::string("the ") + label + " configuration is in collision: " + pairsText(report));
+  }
+
+  const std::filesystem::path synergyFile =
+      o.synergies.empty() ? dataDirectory() / "synergies" / (task.robot->name() + "_default.yaml") : std::filesystem::path(o.synergies);
+  std::optional<SynergyModel> synergies;
+  if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
+  const PlanningSpace space = planningSpaceFromRobot(*task.robot);
+  std::unique_ptr<HandSampler> sampler;
+  try {
+    sampler = makeHandSampler(*mode, space, synergies ? &*synergies : nullptr);
+  } catch (const InputError& e) {
+    throw InputError(synergyFile.string(), e.field(), e.message());
+  }
+
+  PlannerParameters parameters = PlannerParameters::defaultsFor(*mode);
+  parameters.seed = o.seed;
+  parameters.timeLimit = o.timeLimit;
+  parameters.neighbourThresholdFactor = o.neighbourThreshold;
+  parameters.check();
+  SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
+  PmdRoadmapPlanner planner(space, checker, segments, std::move(sampler), parameters);
+  planner.setStartAndGoal(task.start, task.goal);
+  ProgressLine progress("planning " + task.name);
+  planner.setProgressCallback([&](const PlannerProgress& p) {
+    char status[160];
+    std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep, p.armHalfSize,
+                  p.samples, p.roadmapNodes, p.elapsedSeconds);
+    progress.update(p.elapsedSeconds, o.timeLimit, status);
+  });
+  const PlannerStatus status = planner.solve();
+  progress.finish();
+  const auto& stats = planner.statistics();
+
+  const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
+  if (stats.solved()) {
+    PathFile file{task.name, o.planner, o.seed, task.robot->activeJointNames(), planner.path(), mimicRelations(*task.robot), stats};
+    writePathFile(output, file);
+    if (!o.csv.empty()) writePathCsv(o.csv, file.jointNames, file.points);
+  }
+  if (o.json) {
+    auto document = statisticsToJson(stats, true);
+    std::cout << formatJson(document) << "\n";
+  } else if (stats.solved()) {
+    std::printf("%s: solved with the %s planner (seed %llu) in %.3f s + %.3f s smoothing\n", task.name.c_str(), o.planner.c_str(),
+                static_cast<unsigned long long>(o.seed), stats.planningTime, stats.smoothingTime);
+    std::printf("  %zu samples, %zu roadmap nodes, final rho_a %.4f, %zu path nodes, length %.3f (normalised)\n", stats.samples,
+                stats.roadmapNodes, stats.finalArmHalfSize, stats.pathNodes, stats.pathLength);
+    std::printf("  path written to %s\n", output.string().c_str());
+  } else {
+    std::printf("%s: not solved (%s) after %.1f s, %zu samples, %zu roadmap nodes\n", task.name.c_str(),
+                plannerStatusName(status).c_str(), stats.planningTime, stats.samples, stats.roadmapNodes);
+  }
+  return stats.solved() ? 0 : 1;
+}
+
+const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD roadmap planner", [](CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
+  app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
+  app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
+  app.add_option("--seed", o->seed, "Random seed");
+  app.add_option("--time-limit", o->timeLimit, "Wall-clock limit in seconds");
+  app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
+  app.add_option("--neighbour-threshold", o->neighbourThreshold, "Neighbour radius as a multiple of d(start, goal)");
+  app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
+  app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
+  app.add_flag("--json", o->json, "Print the statistics as JSON");
+  return [o] { return run(*o); };
+}};
+
+}  // namespace
+}  // namespace pmdplan::cli
