@@ -18,21 +18,6 @@
 namespace pmdplan::cli {
 namespace {
 
-/// The robot's hand joints (its "hand" group): a built-in robot's name or a .urdf file (with its
-/// .srdf companion beside it).
-JointLimits handJointsOf(const std::string& robot) {
-  const std::filesystem::path path = robot;
-  const RobotModel model = [&] {
-    if (path.extension() != ".urdf") return RobotModel::loadBuiltIn(robot);
-    auto srdf = std::filesystem::path(path).replace_extension(".srdf");
-    return RobotModel::load(path, std::filesystem::exists(srdf) ? std::optional(srdf) : std::nullopt);
-  }();
-  if (!model.hasGroup("hand"))
-    throw InputError(model.urdfPath().string(), "group hand", "the robot's companion file defines no \"hand\" group");
-  JointLimits joints;
-  for (const int index : model.group("hand")) joints.push_back(model.activeJoints()[static_cast<std::size_t>(index)]);
-  return joints;
-}
 
 std::filesystem::path calibrationBeside(const std::filesystem::path& recording) {
   return std::filesystem::path(recording).replace_extension(".calibration.yaml");
@@ -57,7 +42,7 @@ int runSynth(const SynthOptions& o) {
   SyntheticOperatorParameters parameters;
   parameters.frames = o.frames;
   parameters.seed = o.seed;
-  SyntheticGloveSession session = synthesiseGloveSession(parameters, mapping, handJointsOf(o.robot));
+  SyntheticGloveSession session = synthesiseGloveSession(parameters, mapping, RobotModel::loadByNameOrPath(o.robot).groupJoints("hand"));
   session.recording.notes.push_back("Calibration: " + calibrationPath.filename().string() + " (also synthetic).");
   writeFileAtomically(output, formatGloveCsv(session.recording));
   writeFileAtomically(calibrationPath, formatGloveCalibration(session.calibration));

@@ -6,7 +6,6 @@
 
 #include "command_registry.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
-#include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/core/progress_line.hpp"
@@ -15,9 +14,7 @@
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/io/robot_mimic.hpp"
 #include "pmdplan/io/statistics_json.hpp"
-#include "pmdplan/planning/hand_sampling_mode.hpp"
-#include "pmdplan/planning/pmd_roadmap_planner.hpp"
-#include "pmdplan/planning/robot_planning_space.hpp"
+#include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
 
@@ -59,36 +56,39 @@ int run(const Options& o) {
       o.synergies.empty() ? dataDirectory() / "synergies" / (task.robot->name() + "_default.yaml") : std::filesystem::path(o.synergies);
   std::optional<SynergyModel> synergies;
   if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
-  const PlanningSpace space = planningSpaceFromRobot(*task.robot);
-  std::unique_ptr<HandSampler> sampler;
+  TaskPlanningOptions options;
+  options.mode = *mode;
+  options.parameters = PlannerParameters::defaultsFor(*mode);
+  options.parameters.seed = o.seed;
+  options.parameters.timeLimit = o.timeLimit;
+  options.parameters.neighbourThresholdFactor = o.neighbourThreshold;
+  options.toleranceMetres = o.toleranceMm / 1000.0;
+  options.synergies = synergies ? &*synergies : nullptr;
   try {
-    sampler = makeHandSampler(*mode, space, synergies ? &*synergies : nullptr);
+    options.parameters.check();
   } catch (const InputError& e) {
-    throw InputError(synergyFile.string(), e.field(), e.message());
+    throw InputError("", "--" + e.field(), e.message());
   }
-
-  PlannerParameters parameters = PlannerParameters::defaultsFor(*mode);
-  parameters.seed = o.seed;
-  parameters.timeLimit = o.timeLimit;
-  parameters.neighbourThresholdFactor = o.neighbourThreshold;
-  parameters.check();
-  SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
-  PmdRoadmapPlanner planner(space, checker, segments, std::move(sampler), parameters);
-  planner.setStartAndGoal(task.start, task.goal);
   ProgressLine progress("planning " + task.name);
-  planner.setProgressCallback([&](const PlannerProgress& p) {
-    char status[160];
-    std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep, p.armHalfSize,
-                  p.samples, p.roadmapNodes, p.elapsedSeconds);
-    progress.update(p.elapsedSeconds, o.timeLimit, status);
-  });
-  const PlannerStatus status = planner.solve();
+  TaskPlanningResult result;
+  try {
+    result = planTask(task, checker, options, [&](const PlannerProgress& p) {
+      char status[160];
+      std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep, p.armHalfSize,
+                    p.samples, p.roadmapNodes, p.elapsedSeconds);
+      progress.update(p.elapsedSeconds, o.timeLimit, status);
+    });
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError(synergyFile.string(), e.field(), e.message());  // the sampler names the model's field
+  }
   progress.finish();
-  const auto& stats = planner.statistics();
+  const PlannerStatus status = result.status;
+  const auto& stats = result.statistics;
 
   const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
   if (stats.solved()) {
-    PathFile file{task.name, o.planner, o.seed, task.robot->activeJointNames(), planner.path(), mimicRelations(*task.robot), stats};
+    PathFile file{task.name, o.planner, o.seed, task.robot->activeJointNames(), result.path, mimicRelations(*task.robot), stats};
     writePathFile(output, file);
     if (!o.csv.empty()) writePathCsv(o.csv, file.jointNames, file.points);
   }

@@ -40,21 +40,6 @@ struct Options {
   std::string plots;
 };
 
-/// The robot's hand joints (its "hand" group): a built-in robot's name or a .urdf file (with its
-/// .srdf companion beside it).
-JointLimits handJointsOf(const std::string& robot) {
-  const std::filesystem::path path = robot;
-  const RobotModel model = [&] {
-    if (path.extension() != ".urdf") return RobotModel::loadBuiltIn(robot);
-    auto srdf = std::filesystem::path(path).replace_extension(".srdf");
-    return RobotModel::load(path, std::filesystem::exists(srdf) ? std::optional(srdf) : std::nullopt);
-  }();
-  if (!model.hasGroup("hand"))
-    throw InputError(model.urdfPath().string(), "group hand", "the robot's companion file defines no \"hand\" group");
-  JointLimits joints;
-  for (const int index : model.group("hand")) joints.push_back(model.activeJoints()[static_cast<std::size_t>(index)]);
-  return joints;
-}
 
 std::string fileName(const std::filesystem::path& path) { return path.filename().string(); }
 
@@ -135,7 +120,7 @@ int runShow(const Options& o) {
 int runGraspIt(const Options& o) {
   if (o.graspitJoints.empty())
     throw InputError("", "--joints", "GraspIt files carry no joint names: give --joints j1,j2,... (one robot joint per dimension)");
-  const GraspItImport imported = importGraspItEigengrasps(o.graspit, o.graspitJoints, handJointsOf(o.robot));
+  const GraspItImport imported = importGraspItEigengrasps(o.graspit, o.graspitJoints, RobotModel::loadByNameOrPath(o.robot).groupJoints("hand"));
   if (!o.output.empty()) saveSynergyModel(o.output, imported.model);
   writePlots(o, imported.model, {}, imported.model.joints);
   if (o.json) {
@@ -152,7 +137,7 @@ int runGraspIt(const Options& o) {
 }
 
 int runRecording(const Options& o) {
-  const JointLimits hand = handJointsOf(o.robot);
+  const JointLimits hand = RobotModel::loadByNameOrPath(o.robot).groupJoints("hand");
   const GloveRecording recording = readRecording(o);
   std::filesystem::path calibrationPath = o.calibration;
   if (calibrationPath.empty()) {

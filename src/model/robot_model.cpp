@@ -23,6 +23,19 @@ RobotModel RobotModel::loadBuiltIn(const std::string& name) {
   return load(urdf, std::filesystem::exists(srdf) ? std::optional(srdf) : std::nullopt);
 }
 
+RobotModel RobotModel::loadByNameOrPath(const std::string& nameOrUrdf) {
+  const std::filesystem::path path = nameOrUrdf;
+  if (path.extension() != ".urdf") return loadBuiltIn(nameOrUrdf);
+  const auto srdf = std::filesystem::path(path).replace_extension(".srdf");
+  return load(path, std::filesystem::exists(srdf) ? std::optional(srdf) : std::nullopt);
+}
+
+JointLimits RobotModel::groupJoints(const std::string& groupName) const {
+  JointLimits joints;
+  for (const int index : group(groupName)) joints.push_back(activeJoints_[static_cast<std::size_t>(index)]);
+  return joints;
+}
+
 std::vector<std::string> RobotModel::activeJointNames() const {
   std::vector<std::string> names;
   for (const auto& j : activeJoints_) names.push_back(j.name);

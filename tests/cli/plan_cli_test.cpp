@@ -13,14 +13,9 @@ namespace {
 
 using test::runCli;
 
-std::string readFile(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::contents;
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+using test::quoted;
 
 TEST(PlanCli, SolvesTheDefaultTaskWithAPathThatValidates) {
   test::TempDir dir;
@@ -29,14 +24,14 @@ TEST(PlanCli, SolvesTheDefaultTaskWithAPathThatValidates) {
   const auto plan = runCli("plan can_on_table --seed 2 --time-limit 60 -o " + quoted(path) + " --csv " + quoted(csv));
   ASSERT_EQ(plan.exitCode, 0) << plan.out << plan.err;
   EXPECT_NE(plan.out.find("path written to"), std::string::npos);
-  const auto file = nlohmann::json::parse(readFile(path));
+  const auto file = nlohmann::json::parse(contents(path));
   EXPECT_EQ(file["task"], "can_on_table");
   EXPECT_EQ(file["planner"], "pmd");
   EXPECT_EQ(file["seed"], 2);
   EXPECT_EQ(file["joint_names"].size(), 19u);
   EXPECT_GE(file["points"].size(), 2u);
   EXPECT_EQ(file["mimic"]["index_distal"][0], "index_medium");
-  EXPECT_EQ(readFile(csv).substr(0, 13), "tx90_joint_1,");
+  EXPECT_EQ(contents(csv).substr(0, 13), "tx90_joint_1,");
 
   const auto validate = runCli("validate can_on_table " + quoted(path) + " --json");
   ASSERT_EQ(validate.exitCode, 0) << validate.out << validate.err;
@@ -51,8 +46,8 @@ TEST(PlanCli, TheSameTaskAndSeedGiveAByteIdenticalPathFile) {
   const auto a = dir.path() / "a.json", b = dir.path() / "b.json";
   ASSERT_EQ(runCli("plan can_on_table --seed 3 -o " + quoted(a)).exitCode, 0);
   ASSERT_EQ(runCli("plan can_on_table --seed 3 -o " + quoted(b)).exitCode, 0);
-  EXPECT_EQ(readFile(a), readFile(b));
-  EXPECT_FALSE(readFile(a).empty());
+  EXPECT_EQ(contents(a), contents(b));
+  EXPECT_FALSE(contents(a).empty());
 }
 
 TEST(PlanCli, ValidateRejectsAPathThroughTheCan) {
@@ -60,7 +55,7 @@ TEST(PlanCli, ValidateRejectsAPathThroughTheCan) {
   const auto path = dir.path() / "p.json";
   ASSERT_EQ(runCli("plan can_on_table --seed 2 -o " + quoted(path)).exitCode, 0);
   // The straight start-goal segment hits the can: a two-point path along it must fail validation.
-  auto file = nlohmann::json::parse(readFile(path));
+  auto file = nlohmann::json::parse(contents(path));
   file["points"] = nlohmann::json::array({file["points"].front(), file["points"].back()});
   std::ofstream(path) << file.dump();
   const auto validate = runCli("validate can_on_table " + quoted(path) + " --json");
@@ -116,7 +111,7 @@ goal: {joints: {x: 0.5, y: 0.5, spin: 1}}
 
 TEST(PlanCli, AStartInCollisionIsABadInputNamingThePair) {
   test::TempDir dir;
-  std::string text = readFile(std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "scenes" / "can_on_table.yaml");
+  std::string text = contents(std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "scenes" / "can_on_table.yaml");
   // A ball where the start palm is.
   text.replace(text.find("start:"), 0, "  - {name: ball, sphere: 0.03, xyz: [-0.26, 0.537, 0.731]}\n");
   const auto task = dir.write("bad_start.yaml", text);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {
@@ -18,28 +19,10 @@ namespace {
 
 using ::testing::HasSubstr;
 
-struct CliResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
-
-std::string contents(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-CliResult runCli(const test::TempDir& dir, const std::string& arguments) {
-  const auto out = dir.path() / "stdout.txt";
-  const auto err = dir.path() / "stderr.txt";
-  const std::string command = quoted(PMDPLAN_CLI_PATH) + " " + arguments + " >" + quoted(out) + " 2>" + quoted(err);
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, contents(out), contents(err)};
-}
+using test::contents;
+using test::quoted;
+using test::CliResult;
+using test::runCli;
 
 const std::filesystem::path kData = PMDPLAN_TEST_DATA_DIR;
 const std::filesystem::path kSampleCalibration = kData / "glove" / "synthetic_operator_sample.calibration.yaml";

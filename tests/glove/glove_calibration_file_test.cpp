@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "glove_error_matchers.hpp"
+#include "support/input_error_matchers.hpp"
 
 namespace pmdplan {
 namespace {

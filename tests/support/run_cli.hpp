@@ -2,12 +2,13 @@
 // Runs the real `pmdplan` binary (PMDPLAN_CLI_PATH) and captures its exit code and output.
 #include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "support/temp_dir.hpp"
 
 namespace pmdplan::test {
 
@@ -17,24 +18,27 @@ struct CliResult {
   std::string err;
 };
 
-inline CliResult runCli(const std::string& arguments) {
-  const auto errFile = std::filesystem::temp_directory_path() /
-                       ("pmdplan-cli-stderr-" + std::to_string(::getpid()) + "-" + std::to_string(std::rand()));
-  const std::string command = std::string("'") + PMDPLAN_CLI_PATH + "' " + arguments + " 2>'" + errFile.string() + "'";
-  CliResult result;
-  if (FILE* pipe = ::popen(command.c_str(), "r")) {
-    std::array<char, 4096> buffer{};
-    std::size_t n = 0;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::ifstream err(errFile);
+inline std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+
+inline std::string contents(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
-  text << err.rdbuf();
-  result.err = text.str();
-  std::filesystem::remove(errFile);
-  return result;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Output is captured in files inside `dir`.
+inline CliResult runCli(const TempDir& dir, const std::string& arguments) {
+  const auto out = dir.path() / "stdout.txt";
+  const auto err = dir.path() / "stderr.txt";
+  const std::string command = quoted(PMDPLAN_CLI_PATH) + " " + arguments + " >" + quoted(out) + " 2>" + quoted(err);
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, contents(out), contents(err)};
+}
+
+inline CliResult runCli(const std::string& arguments) {
+  const TempDir dir;
+  return runCli(dir, arguments);
 }
 
 }  // namespace pmdplan::test

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "support/temp_dir.hpp"
-#include "synergy_error_matchers.hpp"
+#include "support/input_error_matchers.hpp"
 
 namespace pmdplan {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "pmdplan/glove/cyberglove_sensors.hpp"
 #include "sah_hand_joints.hpp"
-#include "synergy_error_matchers.hpp"
+#include "support/input_error_matchers.hpp"
 
 namespace pmdplan {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "pmdplan/glove/cyberglove_sensors.hpp"
-#include "synergy_error_matchers.hpp"
+#include "support/input_error_matchers.hpp"
 
 namespace pmdplan {
 namespace {

@@ -5,7 +5,7 @@
 #include <Eigen/QR>
 #include <cmath>
 
-#include "synergy_error_matchers.hpp"
+#include "support/input_error_matchers.hpp"
 
 namespace pmdplan {
 namespace {

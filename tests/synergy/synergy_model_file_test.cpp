@@ -5,7 +5,7 @@
 #include <Eigen/QR>
 
 #include "support/temp_dir.hpp"
-#include "synergy_error_matchers.hpp"
+#include "support/input_error_matchers.hpp"
 
 namespace pmdplan {
 namespace {

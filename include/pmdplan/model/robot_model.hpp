@@ -46,6 +46,8 @@ public:
                          const std::optional<std::filesystem::path>& srdf = std::nullopt);
   /// The built-in robot `name` (data/robots/<name>/<name>.urdf and .srdf).
   static RobotModel loadBuiltIn(const std::string& name);
+  /// A built-in robot's name, or a path ending in .urdf (with its .srdf beside it, if present).
+  static RobotModel loadByNameOrPath(const std::string& nameOrUrdf);
 
   const std::string& name() const { return name_; }
   const std::filesystem::path& urdfPath() const { return urdfPath_; }
@@ -67,6 +69,8 @@ public:
   /// Planning groups from the companion file ("arm", "hand"): active-configuration indices.
   const std::vector<int>& group(const std::string& groupName) const;
   bool hasGroup(const std::string& groupName) const;
+  /// The limits of a group's active joints, in configuration order.
+  JointLimits groupJoints(const std::string& groupName) const;
   using GroupDefinition = std::pair<std::string, std::vector<std::string>>;
   /// The groups as the companion file names them (joint names, mimic joints included).
   const std::vector<GroupDefinition>& groupDefinitions() const { return groupDefinitions_; }
