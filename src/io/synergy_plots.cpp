@@ -82,11 +82,13 @@ std::vector<std::string> wrapped(const std::string& content, std::size_t width) 
   return lines;
 }
 
+/// NaN when a joint does not move (its spread no more than rounding of the mean).
 double pearson(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const Eigen::VectorXd da = a.array() - a.mean();
   const Eigen::VectorXd db = b.array() - b.mean();
-  const double denominator = std::sqrt(da.squaredNorm() * db.squaredNorm());
-  return denominator > 0.0 ? da.dot(db) / denominator : std::nan("");
+  const double rounding = 1e-12 * std::sqrt(static_cast<double>(a.size()));
+  if (da.norm() <= rounding * (1.0 + std::abs(a.mean())) || db.norm() <= rounding * (1.0 + std::abs(b.mean()))) return std::nan("");
+  return da.dot(db) / (da.norm() * db.norm());
 }
 
 std::string signedText(double value) {

@@ -1,0 +1,170 @@
+// pmdplan viewer: the robot, the task's obstacles and a planned path from the viewer data that
+// `pmdplan view` writes (viewer-data.js), with the synergy readout and explorer. The page reports
+// itself through window.pmdplanViewer (ready, error, and what a test needs to read).
+import * as THREE from 'three';
+import { byId, element } from './dom.js';
+import { createSceneView, frameBox } from './scene_view.js';
+import { addObstacles } from './obstacles.js';
+import { createRobot } from './robot_poser.js';
+import { createGhostTrail } from './ghost_trail.js';
+import { createJointTable } from './joint_table.js';
+import { createSynergyReadout } from './synergy_readout.js';
+import { createSynergyExplorer } from './synergy_explorer.js';
+import { createPathPlayer } from './path_player.js';
+
+const api = { ready: false, error: null };
+window.pmdplanViewer = api;
+
+// Obstacles larger than this (floors, walls) do not decide where the camera looks.
+const LARGE_OBSTACLE = 1.5;
+const SCENE_VIEW_DIRECTION = new THREE.Vector3(1.0, 0.45, 0.55);
+const GHOSTS_BY_DEFAULT = 8;
+
+function showError(message) {
+  api.error = message;
+  const box = byId('error');
+  box.hidden = false;
+  box.textContent = `The viewer cannot show this folder:\n\n${message}`;
+}
+
+function checkData(data) {
+  if (!data) throw new Error('viewer-data.js is missing or empty. A viewer folder is written by: pmdplan view PATH.json --out DIR');
+  if (data.format !== 'pmdplan-viewer-data' || data.version !== 1)
+    throw new Error(`viewer-data.js: expected format pmdplan-viewer-data version 1, found ${data.format} ${data.version}`);
+  const joints = data.robot.joint_names.length;
+  data.path.states.forEach((state, i) => {
+    if (state.length !== joints) throw new Error(`viewer-data.js: path.states[${i}] has ${state.length} values for ${joints} joints`);
+  });
+  if (data.path.states.length === 0) throw new Error('viewer-data.js: the path has no states');
+}
+
+function sceneBox(robot, data, obstacles) {
+  const box = new THREE.Box3();
+  for (const state of [data.path.states[0], data.path.states[data.path.states.length - 1]]) {
+    robot.setConfiguration(state);
+    box.union(new THREE.Box3().setFromObject(robot.object));
+  }
+  for (const obstacle of obstacles.group.children) {
+    const obstacleBox = new THREE.Box3().setFromObject(obstacle);
+    const size = obstacleBox.getSize(new THREE.Vector3());
+    if (!obstacleBox.isEmpty() && Math.max(size.x, size.y, size.z) < LARGE_OBSTACLE) box.union(obstacleBox);
+  }
+  return box;
+}
+
+function describe(data, notes) {
+  byId('title').textContent = data.title;
+  const s = data.path.statistics;
+  const statistics = s.status === 'not_run' ? '' : ` · ${s.path_nodes} path nodes, length ${s.path_length.toFixed(3)}`;
+  byId('subtitle').textContent = `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
+  const lines = [
+    `path: ${data.sources.path_file} (${data.path.planner}, seed ${data.path.seed})`,
+    `task: ${data.task.name} (${data.sources.task_file})${data.task.description ? ' · ' + data.task.description : ''}`,
+    `robot: ${data.robot.name}`,
+    data.synergies ? `synergies: ${data.sources.synergy_file} · ${data.synergies.provenance}` : 'no synergy model',
+    ...notes,
+  ];
+  const box = byId('provenance');
+  box.replaceChildren(...lines.flatMap((line, i) => (i ? [element('br'), line] : [line])));
+}
+
+function start(data) {
+  checkData(data);
+  const notes = [];
+  const view = createSceneView(byId('view'));
+  const obstacles = addObstacles(view.scene, data.task, notes, () => {
+    describe(data, notes);
+    view.requestRender();
+  });
+  const robot = createRobot(view.scene, data.robot, data.task.base, notes);
+  const jointTable = createJointTable(byId('joint-table'), data.robot, robot);
+  const ghosts = createGhostTrail(view.scene, robot);
+  const states = data.path.states;
+
+  let explorerPosture = null;
+  let player = null;
+  const readout = data.synergies ? createSynergyReadout(data.synergies) : null;
+  function pose(state) {
+    robot.setConfiguration(states[state]);
+    if (explorerPosture) explorerPosture.joints.forEach((name, j) => robot.setJoint(name, explorerPosture.values[j]));
+    robot.object.updateMatrixWorld(true);
+    jointTable.update();
+    if (readout) readout.show(state);
+  }
+  let explorer = null;
+  if (data.synergies) {
+    explorer = createSynergyExplorer(data.synergies, (posture) => {
+      explorerPosture = posture;
+      readout.setExplorerActive(Boolean(posture), posture?.ownAxis, posture?.coefficients);
+      if (player) pose(player.state);
+      view.requestRender();
+    });
+    byId('explorer-from-path').addEventListener('click', () => {
+      const current = readout.current(player.state);
+      byId('explore').checked = true;
+      explorer.setFrom(current.ownAxis, current.coefficients);
+    });
+  } else {
+    byId('synergy-panel').hidden = true;
+    byId('explorer-panel').hidden = true;
+  }
+  const box = sceneBox(robot, data, obstacles);
+  player = createPathPlayer(data.path, view, pose);
+
+  const ghostMode = byId('ghost-mode');
+  const ghostEvery = byId('ghost-every');
+  ghostEvery.value = String(Math.max(1, Math.round((states.length - 1) / GHOSTS_BY_DEFAULT)));
+  let ghostCount = 0;
+  const rebuildGhosts = () => {
+    ghostCount = ghosts.rebuild(states, Number(ghostEvery.value) || 1, ghostMode.value, states[player.state]);
+    pose(player.state);
+    view.requestRender();
+  };
+  ghostMode.addEventListener('change', rebuildGhosts);
+  ghostEvery.addEventListener('change', rebuildGhosts);
+
+  byId('view-scene').addEventListener('click', () => frameBox(view, box, SCENE_VIEW_DIRECTION));
+  byId('view-hand').addEventListener('click', () => {
+    // From ahead of the fingers and to the side, a little above: the fingers, not the forearm.
+    const forward = robot.handDirection();
+    const up = new THREE.Vector3(0, 0, 1);
+    const side = new THREE.Vector3().crossVectors(forward, up);
+    if (side.lengthSq() < 1e-6) side.set(1, 0, 0);
+    const direction = forward.clone().multiplyScalar(0.7).add(side.normalize()).addScaledVector(up, 0.5);
+    const palm = robot.palmPosition();
+    frameBox(view, new THREE.Box3().setFromCenterAndSize(palm, new THREE.Vector3(0.35, 0.35, 0.35)), direction);
+  });
+
+  rebuildGhosts();
+  player.go(0);
+  if (explorer) explorer.refresh();
+  frameBox(view, box, SCENE_VIEW_DIRECTION);
+  describe(data, notes);
+
+  // Descriptors, not Object.assign: the getters must stay live.
+  Object.defineProperties(api, Object.getOwnPropertyDescriptors({
+    stateCount: states.length,
+    waypointStates: data.path.waypoint_states.slice(),
+    jointNames: data.robot.joint_names.slice(),
+    get state() { return player.state; },
+    get playing() { return player.playing; },
+    get renderCount() { return view.renderCount; },
+    get ghostCount() { return ghostCount; },
+    notes,
+    setState: (index) => player.go(index),
+    jointValue: (name) => robot.jointValue(name),
+    synergyReadout: () => (readout ? readout.current(player.state) : null),
+  }));
+  const waitForFirstFrame = () => {
+    if (view.renderCount > 0) api.ready = true;
+    else requestAnimationFrame(waitForFirstFrame);
+  };
+  requestAnimationFrame(waitForFirstFrame);
+}
+
+try {
+  start(window.pmdplanViewerData);
+} catch (error) {
+  showError(error && error.message ? error.message : String(error));
+  console.error(error);
+}

@@ -1,0 +1,187 @@
+// The viewer in a real browser: `pmdplan view PATH --serve 0`, Debian's chromium (headless,
+// SwiftShader WebGL) opens it, waits until it reports ready, and checks what a person would see:
+// the canvas is not blank, moving the slider changes a finger joint and the image, the coupled
+// distal joint follows, keys step, the synergy readout and explorer work, play advances. The
+// page also has to work opened straight from the disk (file://). Screenshots go to --work.
+//
+//   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { launchChromium } from './chromium.mjs';
+import { decodePng, imageContent, changedShare } from './png_image.mjs';
+
+const started = Date.now();
+const seconds = () => ((Date.now() - started) / 1000).toFixed(1);
+const log = (message) => console.log(`[${seconds()} s] ${message}`);
+
+function options() {
+  const args = process.argv.slice(2);
+  const value = (name) => {
+    const i = args.indexOf(name);
+    return i >= 0 ? args[i + 1] : undefined;
+  };
+  const o = { cli: value('--cli'), path: value('--path'), work: value('--work') };
+  if (!o.cli || !o.path || !o.work) {
+    console.error('usage: viewer_browser_test.mjs --cli PMDPLAN --path PATH.json --work DIR');
+    process.exit(2);
+  }
+  return o;
+}
+
+/// Starts `pmdplan view --serve 0` and resolves with the process and the address it prints.
+function serveViewer(cli, path, folder) {
+  const server = spawn(cli, ['view', path, '--out', folder, '--serve', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
+  return new Promise((resolveAddress, reject) => {
+    let out = '', err = '';
+    const timer = setTimeout(() => reject(new Error(`pmdplan view printed no address within 30 s:\n${out}${err}`)), 30_000);
+    server.stdout.on('data', (chunk) => {
+      out += chunk;
+      const match = out.match(/http:\/\/127\.0\.0\.1:(\d+)\//);
+      if (match) {
+        clearTimeout(timer);
+        resolveAddress({ server, url: match[0] });
+      }
+    });
+    server.stderr.on('data', (chunk) => { err += chunk; });
+    server.on('exit', (code) => {
+      clearTimeout(timer);
+      reject(new Error(`pmdplan view exited with ${code} before serving:\n${out}${err}`));
+    });
+  });
+}
+
+async function openViewer(browser, url) {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  const problems = [];
+  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+  page.on('console', (message) => { if (message.type() === 'error') problems.push(`console error: ${message.text()}`); });
+  page.on('requestfailed', (request) => problems.push(`request failed: ${request.url()}`));
+  await page.goto(url);
+  await page.waitForFunction(() => window.pmdplanViewer && (window.pmdplanViewer.ready || window.pmdplanViewer.error),
+    null, { timeout: 60_000 });
+  const error = await page.evaluate(() => window.pmdplanViewer.error);
+  assert.equal(error, null, `the viewer reports an error: ${error}`);
+  return { page, problems };
+}
+
+/// Waits until the page has drawn a frame after `before` frames, then shoots the canvas.
+async function canvasAfterRender(page, before) {
+  await page.waitForFunction((n) => window.pmdplanViewer.renderCount > n, before, { timeout: 20_000 });
+  const png = await page.locator('#view canvas').screenshot();
+  return { png, image: decodePng(png) };
+}
+
+const renderCount = (page) => page.evaluate(() => window.pmdplanViewer.renderCount);
+const viewerValue = (page, fn, argument) => page.evaluate(fn, argument);
+
+async function main() {
+  const o = options();
+  mkdirSync(o.work, { recursive: true });
+  const folder = resolve(o.work, 'viewer');
+  const { server, url } = await serveViewer(o.cli, o.path, folder);
+  log(`pmdplan view serves ${url}`);
+  const browser = await launchChromium();
+  try {
+    log(`chromium ${browser.version()} started`);
+    const { page, problems } = await openViewer(browser, url);
+    log('viewer ready over HTTP');
+    const count = await viewerValue(page, () => window.pmdplanViewer.stateCount);
+    const waypoints = await viewerValue(page, () => window.pmdplanViewer.waypointStates);
+    assert.ok(count >= 3, `expected a path of several states, found ${count}`);
+
+    // The first frame: the robot and the scene, not a blank canvas.
+    const first = await canvasAfterRender(page, 0);
+    const content = imageContent(first.image);
+    assert.ok(content.foregroundShare > 0.05 && content.distinctColours > 20,
+      `the canvas looks blank: ${(100 * content.foregroundShare).toFixed(1)} % non-background, ${content.distinctColours} colours`);
+    writeFileSync(join(o.work, 'viewer-start.png'), first.png);
+    log(`canvas ${first.image.width}x${first.image.height}: ${(100 * content.foregroundShare).toFixed(1)} % drawn, ${content.distinctColours} colours`);
+
+    // Moving the slider moves the fingers, the coupled distal joint with them, and the picture.
+    const joint = (name) => viewerValue(page, (n) => window.pmdplanViewer.jointValue(n), name);
+    const startMedium = await page.evaluate(() => window.pmdplanViewer.jointValue('index_medium'));
+    const startReadout = await viewerValue(page, () => window.pmdplanViewer.synergyReadout());
+    const middle = Math.floor(count / 2);
+    let frames = await renderCount(page);
+    await page.locator('#timeline').fill(String(middle));
+    const moved = await canvasAfterRender(page, frames);
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), middle, 'the slider sets the state');
+    const middleMedium = await joint('index_medium');
+    assert.ok(Math.abs(middleMedium - startMedium) > 1e-3, `index_medium did not move: ${startMedium} -> ${middleMedium}`);
+    assert.ok(Math.abs((await joint('index_distal')) - middleMedium) < 1e-12, 'index_distal follows index_medium (mimic)');
+    const change = changedShare(first.image, moved.image);
+    assert.ok(change > 0.002, `the image hardly changed when the slider moved (${(100 * change).toFixed(3)} % of pixels)`);
+    log(`slider to state ${middle}: index_medium ${startMedium.toFixed(4)} -> ${middleMedium.toFixed(4)} rad, ${(100 * change).toFixed(2)} % of pixels changed`);
+    const jointText = await page.locator('#joint-table').innerText();
+    assert.ok(jointText.includes((middleMedium * 180 / Math.PI).toFixed(1)), 'the joint table shows the current index_medium');
+
+    // The synergy readout follows the state.
+    const middleReadout = await viewerValue(page, () => window.pmdplanViewer.synergyReadout());
+    assert.notDeepEqual(middleReadout.coefficients, startReadout.coefficients, 'the PMD coefficients change along the path');
+    assert.ok(middleReadout.distance >= 0, 'a distance from the subspace is shown');
+    const shownDistance = await page.locator('#distance-value').innerText();
+    assert.equal(shownDistance, middleReadout.distance.toFixed(4));
+
+    // Keys: one state, one waypoint.
+    await page.locator('#timeline').focus();
+    await page.keyboard.press('ArrowRight');
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), middle + 1, 'ArrowRight steps one state');
+    await page.keyboard.press('Shift+ArrowRight');
+    const nextWaypoint = waypoints.find((w) => w > middle + 1);
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), nextWaypoint, 'Shift+ArrowRight goes to the next waypoint');
+    await page.keyboard.press('Home');
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), 0, 'Home goes to the start');
+
+    // The synergy explorer poses the hand along PMD 1; switching it off gives the path back.
+    const pathMedium = await joint('index_medium');
+    const pmd1 = page.locator('#explorer-sliders input').nth(1);
+    await pmd1.fill(await pmd1.getAttribute('max'));
+    assert.equal(await page.locator('#explore').isChecked(), true, 'moving an explorer slider switches the explorer on');
+    const exploredMedium = await joint('index_medium');
+    assert.ok(Math.abs(exploredMedium - pathMedium) > 1e-3, 'PMD 1 moves index_medium');
+    await page.locator('#explore').uncheck();
+    assert.ok(Math.abs((await joint('index_medium')) - pathMedium) < 1e-12, 'without the explorer the hand follows the path');
+    log(`explorer: PMD 1 at +3 sigma moves index_medium ${pathMedium.toFixed(4)} -> ${exploredMedium.toFixed(4)} rad`);
+    // "From the path state" sets the sliders to the state's coefficients: with every PMD, the hand
+    // comes back to (nearly: slider steps) the path's posture.
+    await page.locator('#explorer-from-path').click();
+    assert.equal(await page.locator('#explore').isChecked(), true);
+    const rebuilt = await joint('index_medium');
+    assert.ok(Math.abs(rebuilt - pathMedium) < 0.02, `from the path state: index_medium ${rebuilt} vs the path's ${pathMedium}`);
+    await page.locator('#explore').uncheck();
+
+    // Play advances the animation; pause stops it.
+    await page.locator('#play').click();
+    await page.waitForFunction(() => window.pmdplanViewer.state > 3, null, { timeout: 20_000 });
+    await page.locator('#play').click();
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.playing), false, 'pause stops the animation');
+    log(`play reached state ${await viewerValue(page, () => window.pmdplanViewer.state)}`);
+    assert.ok((await viewerValue(page, () => window.pmdplanViewer.ghostCount)) >= 2, 'a ghost trail is drawn');
+
+    // The screenshot a person would see, in the middle of the motion.
+    frames = await renderCount(page);
+    await page.locator('#timeline').fill(String(middle));
+    await page.waitForFunction((n) => window.pmdplanViewer.renderCount > n, frames);
+    await page.screenshot({ path: join(o.work, 'viewer.png') });
+    log(`screenshot ${join(o.work, 'viewer.png')}`);
+    assert.deepEqual(problems, [], `the page reported problems:\n${problems.join('\n')}`);
+    await page.close();
+
+    // The same folder opened from the disk, as a person double-clicking index.html would.
+    const fromDisk = await openViewer(browser, pathToFileURL(join(folder, 'index.html')).href);
+    assert.deepEqual(fromDisk.problems, [], `from file://:\n${fromDisk.problems.join('\n')}`);
+    log('viewer ready from file://');
+  } finally {
+    await browser.close();
+    server.kill('SIGTERM');
+  }
+  log('all viewer checks passed');
+}
+
+main().catch((error) => {
+  console.error(`[${seconds()} s] FAILED: ${error.stack || error}`);
+  process.exit(1);
+});
