@@ -19,14 +19,8 @@ using test::runCli;
 
 const std::filesystem::path kData = PMDPLAN_TEST_DATA_DIR;
 
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
-
-std::string contents(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::contents;
+using test::quoted;
 
 TEST(SynergyPlotsCli, ARecordingGivesBothFiguresBesideItsUsualOutput) {
   test::TempDir dir;

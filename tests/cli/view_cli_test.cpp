@@ -34,14 +34,8 @@ using test::runCli;
 const std::filesystem::path kSourceTree = std::filesystem::path(PMDPLAN_TEST_DATA_DIR).parent_path();
 const std::filesystem::path kBuildDirectory = std::filesystem::path(PMDPLAN_CLI_PATH).parent_path();
 
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
-
-std::string contents(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::contents;
+using test::quoted;
 
 /// `waypoints` evenly spaced points from the task's start to its goal.
 PathFile straightPath(const Task& task, int waypoints) {
