@@ -43,7 +43,7 @@ PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker
     const auto inspection = segments.inspect(checker, path[i], path[i + 1]);
     result.statesChecked += inspection.statesChecked;
     if (inspection.free) continue;
-    char where[96];
+    char where[160];
     std::snprintf(where, sizeof where, "segment %zu (%zu -> %zu): collides at %.1f %%: ", i, i, i + 1,
                   100.0 * *inspection.firstCollision);
     fail(where + pairText(inspection.collisions));
