@@ -59,7 +59,8 @@ Summary runTask(const std::string& name, HandSamplingMode mode, const SynergyMod
                 ProgressLine& progress, int& done, int total) {
   Summary summary{name, handSamplingModeName(mode), {}};
   const Task task = loadTaskByName(name);
-  ExactCollisionChecker checker(task);
+  CollisionChecking checking(task, CheckerKind::Exact);
+  ExactCollisionChecker& checker = checking.exact();
   const SegmentChecker validation(checker, *task.robot, 0.001);
   for (int seed = 1; seed <= seeds; ++seed) {
     progress.update(done++, total, name + " " + summary.planner + " seed " + std::to_string(seed));
@@ -69,7 +70,7 @@ Summary runTask(const std::string& name, HandSamplingMode mode, const SynergyMod
     options.parameters.seed = static_cast<std::uint64_t>(seed);
     options.parameters.timeLimit = timeLimit;
     options.synergies = &synergies;
-    const auto result = planTask(task, checker, options);
+    const auto result = planTask(task, checking, options);
     Run run;
     run.solved = result.statistics.solved();
     run.statistics = result.statistics;

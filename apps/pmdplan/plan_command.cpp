@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
-#include "pmdplan/collision/exact_collision_checker.hpp"
+#include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/core/progress_line.hpp"
@@ -24,6 +24,7 @@ namespace {
 struct Options {
   std::string task = "can_on_table";
   std::string planner = "pmd";
+  std::string checker = "exact";
   std::string synergies;
   std::uint64_t seed = 1;
   double timeLimit = 60.0;
@@ -45,9 +46,11 @@ int run(const Options& o) {
   if (!mode) throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected pmd or full");
   if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
   const Task task = loadTaskByName(o.task);
-  ExactCollisionChecker checker(task);
+  const auto checkerKind = parseCheckerKind(o.checker);
+  if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
+  CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
   for (const auto& [label, q] : {std::pair{"start", &task.start}, std::pair{"goal", &task.goal}}) {
-    const auto report = checker.check(*q);
+    const auto report = checking.exact().check(*q);
     if (!report.free())
       throw InputError(task.file.string(), label, std::string("the ") + label + " configuration is in collision: " + pairsText(report));
   }
@@ -62,7 +65,6 @@ int run(const Options& o) {
   options.parameters.seed = o.seed;
   options.parameters.timeLimit = o.timeLimit;
   options.parameters.neighbourThresholdFactor = o.neighbourThreshold;
-  options.toleranceMetres = o.toleranceMm / 1000.0;
   options.synergies = synergies ? &*synergies : nullptr;
   try {
     options.parameters.check();
@@ -72,7 +74,7 @@ int run(const Options& o) {
   ProgressLine progress("planning " + task.name);
   TaskPlanningResult result;
   try {
-    result = planTask(task, checker, options, [&](const PlannerProgress& p) {
+    result = planTask(task, checking, options, [&](const PlannerProgress& p) {
       char status[160];
       std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep, p.armHalfSize,
                     p.samples, p.roadmapNodes, p.elapsedSeconds);
@@ -112,6 +114,7 @@ const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD ro
   auto o = std::make_shared<Options>();
   app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
   app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
+  app.add_option("--checker", o->checker, "exact (FCL) or fast (sphere model, FCL on flagged pairs; same answers)");
   app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
   app.add_option("--seed", o->seed, "Random seed");
   app.add_option("--time-limit", o->timeLimit, "Wall-clock limit in seconds");

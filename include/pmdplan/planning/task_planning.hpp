@@ -1,10 +1,10 @@
 #pragma once
-// One planner run on a task: the exact checker, the motion checks at a tolerance, the hand
-// sampler of the chosen mode and the PMD roadmap planner, wired the same way for the CLI and the
+// One planner run on a task: the state and motion checks of the chosen checker, the hand sampler
+// of the chosen mode and the PMD roadmap planner, wired the same way for the CLI and the
 // benchmarks.
 #include <vector>
 
-#include "pmdplan/collision/exact_collision_checker.hpp"
+#include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/planning/hand_sampling_mode.hpp"
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
 #include "pmdplan/world/task.hpp"
@@ -14,7 +14,6 @@ namespace pmdplan {
 struct TaskPlanningOptions {
   HandSamplingMode mode = HandSamplingMode::Synergy;
   PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
-  double toleranceMetres = 0.001;     ///< motion checks: no point moves more between two states
   const SynergyModel* synergies = nullptr;  ///< required for the Synergy mode
 };
 
@@ -24,9 +23,10 @@ struct TaskPlanningResult {
   PlanningStatistics statistics;
 };
 
-/// `checker` must have been built for `task`. Throws InputError for a model that does not fit the
-/// robot's hand (field as the sampler names it, no file) and for bad parameters.
-TaskPlanningResult planTask(const Task& task, ExactCollisionChecker& checker, const TaskPlanningOptions& options,
+/// `checking` must have been built for `task`; its tolerance is the motion checks' resolution.
+/// Throws InputError for a model that does not fit the robot's hand (field as the sampler names
+/// it, no file) and for bad parameters.
+TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningOptions& options,
                             ProgressCallback progress = {});
 
 }  // namespace pmdplan

@@ -1,0 +1,16 @@
+#pragma once
+// Which collision checker a planner runs on: the exact FCL reference, or the fast sphere-model
+// checker whose answers equal it (flagged pairs confirmed by FCL).
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace pmdplan {
+
+enum class CheckerKind { Exact, Fast };
+
+std::string checkerKindName(CheckerKind kind);
+/// "exact" or "fast"; nothing for any other text.
+std::optional<CheckerKind> parseCheckerKind(std::string_view text);
+
+}  // namespace pmdplan
