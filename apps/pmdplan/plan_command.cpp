@@ -24,7 +24,7 @@ namespace {
 struct Options {
   std::string task = "can_on_table";
   std::string planner = "pmd";
-  std::string checker = "exact";
+  std::string checker = "fast";
   std::string synergies;
   std::uint64_t seed = 1;
   double timeLimit = 60.0;
@@ -114,7 +114,7 @@ const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD ro
   auto o = std::make_shared<Options>();
   app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
   app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
-  app.add_option("--checker", o->checker, "exact (FCL) or fast (sphere model, FCL on flagged pairs; same answers)");
+  app.add_option("--checker", o->checker, "fast (default: sphere model, FCL on flagged pairs; the same answers) or exact (FCL only)");
   app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
   app.add_option("--seed", o->seed, "Random seed");
   app.add_option("--time-limit", o->timeLimit, "Wall-clock limit in seconds");

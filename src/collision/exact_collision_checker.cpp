@@ -129,26 +129,40 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
 
 ExactCollisionChecker::~ExactCollisionChecker() = default;
 
-bool ExactCollisionChecker::selfCollides(const LinkPoses& poses, bool armOnly, CollisionReport* report) const {
+const std::vector<std::pair<int, int>>& ExactCollisionChecker::selfPairs() const { return geometry_->selfPairs; }
+
+bool ExactCollisionChecker::linkPairCollides(const LinkPoses& poses, int a, int b) const {
   const auto& g = *geometry_;
+  const auto& pa = poses[static_cast<std::size_t>(a)];
+  const auto& pb = poses[static_cast<std::size_t>(b)];
+  const auto& sa = g.linkSpheres[static_cast<std::size_t>(a)];
+  const auto& sb = g.linkSpheres[static_cast<std::size_t>(b)];
+  if (spheresApart(pa * sa.centre, sa.radius, pb * sb.centre, sb.radius)) return false;
+  for (const auto& shapeA : g.links[static_cast<std::size_t>(a)])
+    for (const auto& shapeB : g.links[static_cast<std::size_t>(b)])
+      if (shapesCollide(shapeA, pa * shapeA.pose, shapeB, pb * shapeB.pose, g.request)) return true;
+  return false;
+}
+
+bool ExactCollisionChecker::linkObstacleCollides(const LinkPoses& poses, int link, std::size_t o) const {
+  const auto& g = *geometry_;
+  const auto l = static_cast<std::size_t>(link);
+  if (g.links[l].empty()) return false;
+  const auto& pose = poses[l];
+  const auto& obstacle = g.obstacles[o];
+  if (sphereOutsideBox(pose * g.linkSpheres[l].centre, g.linkSpheres[l].radius, obstacle)) return false;
+  return std::any_of(g.links[l].begin(), g.links[l].end(), [&](const PlacedGeometry& shape) {
+    const Eigen::Isometry3d shapePose = pose * shape.pose;
+    return !sphereOutsideBox(shapePose.translation(), shape.radius, obstacle) &&
+           shapesCollide(shape, shapePose, obstacle, obstacle.pose, g.request);
+  });
+}
+
+bool ExactCollisionChecker::selfCollides(const LinkPoses& poses, bool armOnly, CollisionReport* report) const {
   bool collides = false;
-  for (auto [a, b] : g.selfPairs) {
+  for (auto [a, b] : geometry_->selfPairs) {
     if (armOnly && !(armLink_[static_cast<std::size_t>(a)] && armLink_[static_cast<std::size_t>(b)])) continue;
-    const auto& pa = poses[static_cast<std::size_t>(a)];
-    const auto& pb = poses[static_cast<std::size_t>(b)];
-    const auto& sa = g.linkSpheres[static_cast<std::size_t>(a)];
-    const auto& sb = g.linkSpheres[static_cast<std::size_t>(b)];
-    if (spheresApart(pa * sa.centre, sa.radius, pb * sb.centre, sb.radius)) continue;
-    bool pairCollides = false;
-    for (const auto& sa : g.links[static_cast<std::size_t>(a)]) {
-      for (const auto& sb : g.links[static_cast<std::size_t>(b)])
-        if (shapesCollide(sa, pa * sa.pose, sb, pb * sb.pose, g.request)) {
-          pairCollides = true;
-          break;
-        }
-      if (pairCollides) break;
-    }
-    if (!pairCollides) continue;
+    if (!linkPairCollides(poses, a, b)) continue;
     collides = true;
     if (!report) return true;
     report->pairs.emplace_back(model_.links()[static_cast<std::size_t>(a)].name, model_.links()[static_cast<std::size_t>(b)].name);
@@ -159,24 +173,13 @@ bool ExactCollisionChecker::selfCollides(const LinkPoses& poses, bool armOnly, C
 bool ExactCollisionChecker::environmentCollides(const LinkPoses& poses, CollisionReport* report) const {
   const auto& g = *geometry_;
   bool collides = false;
-  for (std::size_t l = 0; l < g.links.size(); ++l) {
-    if (g.links[l].empty()) continue;
-    const auto& pose = poses[l];
-    const Eigen::Vector3d centre = pose * g.linkSpheres[l].centre;
+  for (std::size_t l = 0; l < g.links.size(); ++l)
     for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
-      const auto& obstacle = g.obstacles[o];
-      if (sphereOutsideBox(centre, g.linkSpheres[l].radius, obstacle)) continue;
-      const bool hit = std::any_of(g.links[l].begin(), g.links[l].end(), [&](const PlacedGeometry& shape) {
-        const Eigen::Isometry3d shapePose = pose * shape.pose;
-        return !sphereOutsideBox(shapePose.translation(), shape.radius, obstacle) &&
-               shapesCollide(shape, shapePose, obstacle, obstacle.pose, g.request);
-      });
-      if (!hit) continue;
+      if (!linkObstacleCollides(poses, static_cast<int>(l), o)) continue;
       collides = true;
       if (!report) return true;
       report->pairs.emplace_back(model_.links()[l].name, task_.obstacles[o].name);
     }
-  }
   return collides;
 }
 

@@ -35,6 +35,15 @@ public:
   const RobotModel& model() const { return model_; }
   const ForwardKinematics& kinematics() const { return kinematics_; }
 
+  // Pair-level access for checkers that confirm only some pairs (the fast checker): the exact
+  // tests isValid runs, one pair at a time, on poses from kinematics().linkPoses(q).
+  /// Enabled self-collision pairs (both links with geometry, not disabled), in the order checked.
+  const std::vector<std::pair<int, int>>& selfPairs() const;
+  /// Links whose pose depends on arm joints only (the pairs isArmValid checks have both).
+  bool isArmLink(int link) const { return armLink_[static_cast<std::size_t>(link)] != 0; }
+  bool linkPairCollides(const LinkPoses& poses, int linkA, int linkB) const;
+  bool linkObstacleCollides(const LinkPoses& poses, int link, std::size_t obstacle) const;
+
 private:
   struct Geometry;
   bool selfCollides(const LinkPoses& poses, bool armOnly, CollisionReport* report) const;

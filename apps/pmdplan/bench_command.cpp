@@ -1,0 +1,164 @@
+// `pmdplan bench [TASK...]`: planners side by side on the same tasks with the same checks: every
+// run's CSV row, the Markdown tables (also printed), an OMPL benchmark log and a box plot of the
+// planning times. Under `mpirun -np P` the runs are split across the ranks and rank 0 writes the
+// outputs. Exit 0 done (whatever the runs' outcomes unless --require), 1 a --require planner
+// failed a run, 2 bad input.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+#include <optional>
+
+#include "command_registry.hpp"
+#include "pmdplan/bench/bench_options.hpp"
+#include "pmdplan/bench/campaign.hpp"
+#include "pmdplan/bench/campaign_ranks.hpp"
+#include "pmdplan/bench/ompl_benchmark_log.hpp"
+#include "pmdplan/bench/planner_roster.hpp"
+#include "pmdplan/bench/planning_time_plot.hpp"
+#include "pmdplan/bench/results_csv.hpp"
+#include "pmdplan/bench/results_markdown.hpp"
+#include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/progress_line.hpp"
+
+namespace pmdplan::cli {
+namespace {
+
+struct CommandLine {
+  std::vector<std::string> tasks;
+  std::string planners = "pmd";
+  int runs = 10;
+  long long seed = 1;
+  double timeLimit = 60.0;
+  std::optional<double> grace;  // unset: max(60 s, time limit)
+  std::string checker = "fast";
+  double toleranceMm = 1.0;
+  std::string synergies, csv, markdown, omplLog, plot;
+  std::string require;  // planners every run of which must succeed, else exit 1
+};
+
+BenchOptions benchOptions(const CommandLine& c) {
+  BenchOptions o;
+  if (!c.tasks.empty()) o.tasks = c.tasks;
+  o.planners = splitList(c.planners);
+  o.runs = c.runs;
+  if (c.seed < 1) throw InputError("", "--seed", "expected a seed >= 1 (OMPL cannot take seed 0), got " + std::to_string(c.seed));
+  o.seed = static_cast<std::uint64_t>(c.seed);
+  o.timeLimit = c.timeLimit;
+  o.graceSeconds = c.grace ? *c.grace : std::max(60.0, c.timeLimit);
+  const auto kind = parseCheckerKind(c.checker);
+  if (!kind) throw InputError("", "--checker", "'" + c.checker + "' is not a checker; expected exact or fast");
+  o.checker = *kind;
+  o.toleranceMetres = c.toleranceMm / 1000.0;
+  o.synergies = c.synergies;
+  o.csv = c.csv;
+  o.markdown = c.markdown;
+  o.omplLog = c.omplLog;
+  o.plot = c.plot;
+  checkBenchOptions(o);
+  for (const std::string& name : splitList(c.require))
+    if (!c.require.empty() && std::find(o.planners.begin(), o.planners.end(), name) == o.planners.end())
+      throw InputError("", "--require", "'" + name + "' is not one of the --planners of this run");
+  return o;
+}
+
+/// Runs of the --require planners that did not solve with a valid path.
+std::size_t requiredFailures(const std::vector<RunRecord>& records, const std::string& require) {
+  if (require.empty()) return 0;
+  const auto required = splitList(require);
+  return static_cast<std::size_t>(std::count_if(records.begin(), records.end(), [&](const RunRecord& r) {
+    return !r.succeeded() && std::find(required.begin(), required.end(), r.planner) != required.end();
+  }));
+}
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm parts{};
+  gmtime_r(&now, &parts);
+  char text[64];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", &parts);
+  return text;
+}
+
+std::string hostName() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+/// `taskNames`: the tasks' own names (a task given as a file is known by the name inside it).
+void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNames, const std::vector<RunRecord>& records,
+                  const std::string& markdown, const std::string& started, double totalSeconds, int ranks) {
+  if (!o.csv.empty()) writeFileAtomically(o.csv, runRecordsCsv(records));
+  if (!o.markdown.empty()) writeFileAtomically(o.markdown, markdown);
+  if (!o.plot.empty()) writeFileAtomically(o.plot, planningTimeBoxPlotSvg(records, taskNames, o.planners, o.timeLimit));
+  if (!o.omplLog.empty()) {
+    char setup[256];
+    std::snprintf(setup, sizeof setup,
+                  "pmdplan bench: checker %s, tolerance %g mm, %d rank(s); paths smoothed by pmdplan's shortcut smoothing "
+                  "(Sect. 5.3) and re-validated by the exact checker",
+                  checkerKindName(o.checker).c_str(), o.toleranceMetres * 1000.0, ranks);
+    for (const std::string& task : taskNames) {
+      const OmplLogContext context{hostName(), started, setup, o.seed, o.timeLimit, o.runs, totalSeconds};
+      writeFileAtomically(omplLogPathForTask(o.omplLog, task, taskNames.size()), omplBenchmarkLog(records, task, o.planners, context));
+    }
+  }
+}
+
+int run(const CommandLine& c) {
+  const BenchOptions o = benchOptions(c);
+  const CampaignRanks ranks;
+  CampaignInputs inputs = loadCampaignInputs(o);
+  const std::string started = utcNow();
+  const auto began = std::chrono::steady_clock::now();
+  ProgressLine progress(ranks.size() > 1 ? "bench (rank 0 of " + std::to_string(ranks.size()) + ")" : "bench");
+  const auto records = runCampaign(o, inputs, ranks, [&](std::size_t done, std::size_t total, const RunRecord& r) {
+    if (!ranks.first()) return;
+    progress.update(static_cast<double>(done), static_cast<double>(total),
+                    r.task + " " + r.planner + " run " + std::to_string(r.run) + (r.succeeded() ? " ok" : " failed"));
+  });
+  progress.finish();
+  if (!ranks.first()) return 0;
+  const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  std::vector<std::string> taskNames;
+  for (const auto& bench : inputs.tasks) taskNames.push_back(bench->task().name);
+  const std::string markdown = benchMarkdown(records, taskNames, o.planners);
+  writeOutputs(o, taskNames, records, markdown, started, totalSeconds, ranks.size());
+  std::cout << markdown;
+  std::printf("\n%zu runs in %.1f s on %d rank(s), checker %s, time limit %g s, seeds %llu..%llu\n", records.size(), totalSeconds,
+              ranks.size(), checkerKindName(o.checker).c_str(), o.timeLimit, static_cast<unsigned long long>(o.seed),
+              static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.runs) - 1));
+  if (const std::size_t failed = requiredFailures(records, c.require); failed > 0) {
+    std::fprintf(stderr, "pmdplan: %zu run(s) of the --require planners (%s) did not solve with a valid path\n", failed, c.require.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seeded runs, tables, CSV, OMPL log, plot (MPI-aware)",
+                                 [](CLI::App& app) {
+  auto c = std::make_shared<CommandLine>();
+  app.add_option("task", c->tasks, "Built-in task names or task files (default: the five paper tasks)");
+  app.add_option("--planners", c->planners, "Comma-separated planners: " + knownPlannerNames() + " (default pmd)");
+  app.add_option("--runs", c->runs, "Runs per task and planner; run i uses seed S + i (default 10)");
+  app.add_option("--seed", c->seed, "First seed S, >= 1 (default 1)");
+  app.add_option("--time-limit", c->timeLimit, "Planning time limit per run in seconds (default 60)");
+  app.add_option("--grace", c->grace, "Seconds past the time limit before a run's process is killed (default max(60, limit))");
+  app.add_option("--checker", c->checker, "exact (FCL) or fast (default fast)");
+  app.add_option("--tolerance-mm", c->toleranceMm, "Motion check and validation tolerance in millimetres (default 1)");
+  app.add_option("--synergies", c->synergies, "Synergy model file (default: the robot's shipped model)");
+  app.add_option("--require", c->require, "Comma-separated planners whose every run must solve with a valid path (else exit 1)");
+  app.add_option("--csv", c->csv, "Write every run as a CSV row");
+  app.add_option("--markdown", c->markdown, "Write the tables as Markdown");
+  app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
+  app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
+  return [c] { return run(*c); };
+}};
+
+}  // namespace
+}  // namespace pmdplan::cli

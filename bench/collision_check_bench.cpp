@@ -1,0 +1,195 @@
+// Exact (FCL) against fast (sphere stage + FCL on flagged pairs) collision checks, side by side in
+// one run, on two mixes of configurations per task:
+//   plan   - the states a real PMD plan of the task checks (samples and motion-check states,
+//            recorded from one seeded run), the mix that matters for planning time;
+//   random - the equivalence test's mix: uniform in the limits, near start/goal, near the straight
+//            start-goal segment (about half of them collide).
+// Then segment checks: SegmentChecker on the exact checker against BatchedSegmentChecker on short
+// planner-like segments. After the Google Benchmark table, a summary prints the exact/fast ratio
+// of every pair of benchmarks.
+//
+//   collision_check_bench [--benchmark_min_time=0.2] [--benchmark_filter=...]
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pmdplan/collision/batched_segment_checker.hpp"
+#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/segment_checker.hpp"
+#include "pmdplan/core/data_directory.hpp"
+#include "pmdplan/core/random_source.hpp"
+#include "pmdplan/planning/hand_sampling_mode.hpp"
+#include "pmdplan/planning/pmd_roadmap_planner.hpp"
+#include "pmdplan/planning/robot_planning_space.hpp"
+#include "pmdplan/synergy/synergy_model_file.hpp"
+
+using namespace pmdplan;
+
+namespace {
+
+const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
+constexpr std::size_t kMaxRecorded = 20000;
+
+/// Passes every check on to the fast checker and keeps the configurations (up to a limit).
+class RecordingValidator : public StateValidator {
+public:
+  explicit RecordingValidator(StateValidator& inner) : inner_(inner) {}
+  bool isValid(const Configuration& q) override {
+    if (recorded.size() < kMaxRecorded) recorded.push_back(q);
+    return inner_.isValid(q);
+  }
+  bool isArmValid(const Configuration& q) override { return inner_.isArmValid(q); }
+  std::size_t checkCount() const override { return inner_.checkCount(); }
+  std::vector<Configuration> recorded;
+
+private:
+  StateValidator& inner_;
+};
+
+double normal(RandomSource& random) {
+  const double u1 = 1.0 - random.uniform01(), u2 = random.uniform01();
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
+}
+
+Configuration randomMixConfiguration(const Task& task, RandomSource& random, int kind) {
+  const auto& joints = task.robot->activeJoints();
+  Configuration q(task.robot->dof());
+  const double t = random.uniform01();
+  const bool nearGoal = random.uniform01() < 0.5;
+  for (int i = 0; i < q.size(); ++i) {
+    const auto& j = joints[static_cast<std::size_t>(i)];
+    const double spread = 0.05 * (j.upper - j.lower) * normal(random);
+    const double value = kind == 0   ? random.uniform(j.lower, j.upper)
+                         : kind == 1 ? (nearGoal ? task.goal[i] : task.start[i]) + spread
+                                     : task.start[i] + t * (task.goal[i] - task.start[i]) + spread;
+    q[i] = std::clamp(value, j.lower, j.upper);
+  }
+  return q;
+}
+
+struct Segment {
+  Configuration from, to;
+};
+
+struct TaskData {
+  Task task;
+  std::unique_ptr<ExactCollisionChecker> exact;    ///< benchmarked alone
+  std::unique_ptr<ExactCollisionChecker> confirm;  ///< the fast checker's FCL
+  std::unique_ptr<FastCollisionChecker> fast;
+  std::vector<Configuration> planStates, randomStates;
+  std::vector<Segment> segments;
+};
+
+TaskData& taskData(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<TaskData>> cache;
+  auto& slot = cache[name];
+  if (slot) return *slot;
+  slot = std::make_unique<TaskData>();
+  auto& d = *slot;
+  d.task = loadTaskByName(name);
+  d.exact = std::make_unique<ExactCollisionChecker>(d.task);
+  d.confirm = std::make_unique<ExactCollisionChecker>(d.task);
+  d.fast = std::make_unique<FastCollisionChecker>(d.task, *d.confirm);
+
+  // One seeded plan, every state it checks recorded (motion states through SegmentChecker).
+  const auto synergies = loadSynergyModel(dataDirectory() / "synergies" / (d.task.robot->name() + "_default.yaml"));
+  const PlanningSpace space = planningSpaceFromRobot(*d.task.robot);
+  RecordingValidator recorder(*d.fast);
+  SegmentChecker motions(recorder, *d.task.robot);
+  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  parameters.seed = 1;
+  parameters.timeLimit = 60.0;
+  PmdRoadmapPlanner planner(space, recorder, motions, makeHandSampler(HandSamplingMode::Synergy, space, &synergies), parameters);
+  planner.setStartAndGoal(d.task.start, d.task.goal);
+  planner.solve();
+  d.planStates = std::move(recorder.recorded);
+
+  RandomSource random(2026);
+  for (int i = 0; i < 3000; ++i) d.randomStates.push_back(randomMixConfiguration(d.task, random, i % 3));
+  SweptDistanceBound bound(*d.task.robot);
+  while (d.segments.size() < 300) {
+    const Configuration from = randomMixConfiguration(d.task, random, 1 + static_cast<int>(d.segments.size() % 2));
+    Configuration direction(from.size());
+    for (int i = 0; i < from.size(); ++i) direction[i] = normal(random);
+    const double length = random.uniform(0.002, 0.06);
+    const Configuration to = from + direction * (length / bound.bound(from, from + direction));
+    if (!d.task.robot->withinLimits(to, 0.0) || !d.exact->isValid(from) || !d.exact->isValid(to)) continue;
+    d.segments.push_back({from, to});
+  }
+  return d;
+}
+
+const std::vector<Configuration>& mix(TaskData& d, int which) { return which == 0 ? d.planStates : d.randomStates; }
+
+void checkStates(benchmark::State& state, const std::string& name, bool fast, int which) {
+  auto& d = taskData(name);
+  StateValidator& checker = fast ? static_cast<StateValidator&>(*d.fast) : *d.exact;
+  const auto& states = mix(d, which);
+  std::size_t i = 0, valid = 0;
+  for (auto _ : state) {
+    valid += checker.isValid(states[i]);
+    if (++i == states.size()) i = 0;
+  }
+  state.counters["states"] = static_cast<double>(states.size());
+  state.counters["valid_share"] = static_cast<double>(valid) / static_cast<double>(state.iterations());
+}
+
+void checkSegments(benchmark::State& state, const std::string& name, bool fast) {
+  auto& d = taskData(name);
+  SegmentChecker slow(*d.exact, *d.task.robot);
+  BatchedSegmentChecker batched(*d.fast, *d.task.robot, SegmentChecker::kDefaultTolerance);
+  MotionValidator& motions = fast ? static_cast<MotionValidator&>(batched) : slow;
+  std::size_t i = 0, free = 0;
+  for (auto _ : state) {
+    free += motions.isValid(d.segments[i].from, d.segments[i].to);
+    if (++i == d.segments.size()) i = 0;
+  }
+  state.counters["states_per_segment"] = static_cast<double>(motions.statesChecked()) / static_cast<double>(state.iterations());
+  state.counters["free_share"] = static_cast<double>(free) / static_cast<double>(state.iterations());
+}
+
+/// Keeps every run's time per iteration for the ratio summary.
+class RatioReporter : public benchmark::ConsoleReporter {
+public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const auto& run : runs)
+      if (run.run_type == Run::RT_Iteration) times[run.benchmark_name()] = run.GetAdjustedRealTime();
+    ConsoleReporter::ReportRuns(runs);
+  }
+  std::map<std::string, double> times;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  for (const auto& name : kTasks) {
+    for (const auto& [which, label] : {std::pair{0, "plan"}, std::pair{1, "random"}})
+      for (const bool fast : {false, true})
+        benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/" + (fast ? "fast" : "exact")).c_str(),
+                                     [=](benchmark::State& s) { checkStates(s, name, fast, which); })
+            ->Unit(benchmark::kMicrosecond);
+    for (const bool fast : {false, true})
+      benchmark::RegisterBenchmark(("segment/" + name + "/" + (fast ? "fast" : "exact")).c_str(),
+                                   [=](benchmark::State& s) { checkSegments(s, name, fast); })
+          ->Unit(benchmark::kMicrosecond);
+  }
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::printf("\nexact / fast time ratio (avx2 kernels: %s)\n", BatchedForwardKinematics::usesAvx2() ? "yes" : "no");
+  for (const auto& [benchmarkName, exactTime] : reporter.times) {
+    const auto at = benchmarkName.rfind("/exact");
+    if (at == std::string::npos || at + 6 != benchmarkName.size()) continue;
+    const auto fast = reporter.times.find(benchmarkName.substr(0, at) + "/fast");
+    if (fast == reporter.times.end()) continue;
+    std::printf("  %-34s exact %9.2f us  fast %8.2f us  ratio %6.1f\n", benchmarkName.substr(0, at).c_str(), exactTime,
+                fast->second, exactTime / fast->second);
+  }
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,44 @@
+#pragma once
+// What a benchmark campaign runs: tasks x planners x runs, seeds, limits, checker and outputs.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pmdplan/collision/checker_kind.hpp"
+#include "pmdplan/collision/segment_checker.hpp"
+
+namespace pmdplan {
+
+struct BenchOptions {
+  /// Built-in task names or task files (default: the paper's five tasks).
+  std::vector<std::string> tasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
+  /// Names from plannerRoster().
+  std::vector<std::string> planners = {"pmd"};
+  /// Runs per task and planner; run i uses seed + i.
+  int runs = 10;
+  std::uint64_t seed = 1;
+  /// Wall-clock limit of each run's planning, seconds.
+  double timeLimit = 60.0;
+  /// A run's child process is killed once it has gone this long past the time limit without a
+  /// result (smoothing and validation come after planning), and the run recorded as a failure.
+  double graceSeconds = 60.0;
+  CheckerKind checker = CheckerKind::Fast;
+  /// Motion-check resolution of every planner and of the validation, metres.
+  double toleranceMetres = SegmentChecker::kDefaultTolerance;
+  /// Synergy model for the PMD planner and the human-likeness metrics (empty: the robot's default).
+  std::filesystem::path synergies;
+  /// Outputs (empty: not written).
+  std::filesystem::path csv, markdown, omplLog, plot;
+};
+
+/// Throws InputError (no file; field named like the command-line option, e.g. "--runs",
+/// "--planners", "--time-limit", "--tolerance-mm", "TASK") for an empty or unknown planner list,
+/// a repeated planner or task, runs < 1, a time limit that is not a positive finite number, a
+/// tolerance that is not positive, or no task. Tasks themselves are checked when loaded.
+void checkBenchOptions(const BenchOptions& options);
+
+/// Splits "a,b,c" at commas (empty items kept, so checkBenchOptions can name them).
+std::vector<std::string> splitList(const std::string& text);
+
+}  // namespace pmdplan

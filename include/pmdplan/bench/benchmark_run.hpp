@@ -1,0 +1,26 @@
+#pragma once
+// One benchmark run: plan with the chosen planner, smooth, validate, measure.
+//
+// Smoothing: our planners smooth inside solve() (Sect. 5.3). An OMPL planner's path gets the very
+// same smoothing afterwards: smoothPath over all of the path's states with the same
+// MotionValidator, timed as its smoothing time; OMPL's own simplifier is not used.
+// Validation: every returned path, ours too, is checked again by validatePath on a separate exact
+// checker at the same tolerance; an invalid path is a failure, never a success.
+#include <cstdint>
+#include <vector>
+
+#include "pmdplan/bench/planner_roster.hpp"
+#include "pmdplan/bench/run_record.hpp"
+#include "pmdplan/bench/task_bench.hpp"
+
+namespace pmdplan {
+
+/// Runs planner `planner` once with `seed` (run number `run`). An OMPL planner sets OMPL's
+/// process-wide seed, so call this in a fresh process per run (forked_run.hpp).
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, std::uint64_t seed, double timeLimitSeconds);
+
+/// Validates the solved run's path and measures it into `record` (path nodes, length,
+/// human-likeness, valid); an invalid path sets `failure` to the validation's first problem.
+void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record);
+
+}  // namespace pmdplan

@@ -1,0 +1,58 @@
+#pragma once
+// A benchmark campaign: the flat list of (task, planner, run) jobs, split across ranks
+// deterministically (job j goes to rank j mod P, so every rank gets a mix of planners and tasks),
+// each job run in a forked child (forked_run.hpp), the records gathered on rank 0 in job order.
+// The records do not depend on how many ranks ran them, timings aside.
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pmdplan/bench/bench_options.hpp"
+#include "pmdplan/bench/run_record.hpp"
+#include "pmdplan/bench/task_bench.hpp"
+#include "pmdplan/synergy/synergy_model.hpp"
+
+namespace pmdplan {
+
+class CampaignRanks;
+
+struct CampaignJob {
+  std::size_t task = 0;     ///< index into BenchOptions::tasks
+  std::size_t planner = 0;  ///< index into BenchOptions::planners
+  int run = 0;
+};
+
+/// Task-major, then planner, then run.
+std::vector<CampaignJob> campaignJobs(const BenchOptions& options);
+/// Indices of the jobs rank `rank` of `ranks` runs: j with j mod ranks == rank.
+std::vector<std::size_t> jobsOfRank(std::size_t jobCount, int rank, int ranks);
+
+/// Called after each finished job of this rank: jobs done so far, this rank's job count, the record.
+using CampaignProgress = std::function<void(std::size_t done, std::size_t total, const RunRecord& record)>;
+
+/// Built once before any run, on every rank: the synergy model and each task's TaskBench, so a
+/// missing task, a colliding start or a model for another hand is an InputError before any run.
+struct CampaignInputs {
+  std::unique_ptr<SynergyModel> synergies;  ///< behind a pointer: the benches keep its address
+  std::string synergyFile;
+  std::vector<std::unique_ptr<TaskBench>> tasks;  ///< one per BenchOptions::tasks entry
+};
+/// Reads the tasks and the synergy model (options.synergies, or the first task's robot default)
+/// and builds the checkers of options.checker.
+CampaignInputs loadCampaignInputs(const BenchOptions& options);
+
+/// Runs the jobs `jobIndices` (indices into campaignJobs(options)), each in a forked child that is
+/// killed after time limit + grace. Records come back in the order of `jobIndices`; a crashed,
+/// killed or failing child gives a record with solved = false, the reason in `failure` and the
+/// child's wall-clock time as its planning time.
+std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
+                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress = {});
+
+/// The whole campaign on every rank of `ranks`: rank 0 returns all records in job order, the other
+/// ranks return nothing.
+std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, const CampaignRanks& ranks,
+                                   const CampaignProgress& progress = {});
+
+}  // namespace pmdplan

@@ -1,0 +1,16 @@
+#pragma once
+// The campaign as Markdown, laid out like the paper's Tables 2 and 4: rows are the metrics,
+// columns the planners, one table per task. Each cell is "mean (median)" over the successful
+// runs (solved and valid), the first row the success rate over all runs.
+#include <string>
+#include <vector>
+
+#include "pmdplan/bench/run_record.hpp"
+
+namespace pmdplan {
+
+/// Tables for `tasks` x `planners` (in that order) from `records`.
+std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vector<std::string>& tasks,
+                          const std::vector<std::string>& planners);
+
+}  // namespace pmdplan

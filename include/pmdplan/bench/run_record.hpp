@@ -1,0 +1,56 @@
+#pragma once
+// One benchmark run of a planner on a task: what every output (CSV, Markdown, OMPL log, plot) is
+// made from. Records travel from the forked child that ran them, and between MPI ranks, as text
+// (encodeRunRecord / decodeRunRecord) that restores every number exactly.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace pmdplan {
+
+/// How far a path's hand postures are from the human data (human_likeness.hpp).
+struct HumanLikeness {
+  /// Distance from the synergy subspace the PMD planner samples, normalised joint units.
+  double subspaceDistanceMean = 0.0;
+  double subspaceDistanceMax = 0.0;
+  /// Mahalanobis distance under the synergy model, mean along the path.
+  double mahalanobisMean = 0.0;
+};
+
+struct RunRecord {
+  std::string task;
+  std::string planner;
+  int run = 0;               ///< 0 .. runs-1
+  std::uint64_t seed = 0;    ///< S + run
+  /// The planner returned an exact solution.
+  bool solved = false;
+  /// The returned path passed validatePath on a separate exact checker (false when not solved).
+  bool valid = false;
+  double planningTimeSeconds = 0.0;
+  double smoothingTimeSeconds = 0.0;
+  /// PMD planners: arm configurations tried (numSamples of Algorithm 4, Table 2's "samples").
+  /// OMPL planners: states their validity checker was asked about.
+  std::size_t samples = 0;
+  /// PMD planners: roadmap nodes; OMPL planners: vertices of the planner data ("graph states").
+  std::size_t roadmapNodes = 0;
+  /// Of the smoothed path (0 if not solved).
+  std::size_t pathNodes = 0;
+  double pathLength = 0.0;  ///< normalised joint space
+  /// Configurations checked by the state and motion validators during planning and smoothing.
+  std::size_t collisionChecks = 0;
+  /// Of the smoothed path; set when solved (valid or not).
+  std::optional<HumanLikeness> humanLikeness;
+  /// Empty for a success; otherwise why the run failed (not solved, invalid path, crash, ...).
+  std::string failure;
+
+  /// Solved and valid: the only runs that count as successes.
+  bool succeeded() const { return solved && valid; }
+};
+
+/// One line of text (no newline inside) holding every field, numbers in their shortest exact form.
+std::string encodeRunRecord(const RunRecord& record);
+/// Inverse of encodeRunRecord; std::nullopt if the text is not one.
+std::optional<RunRecord> decodeRunRecord(const std::string& text);
+
+}  // namespace pmdplan

@@ -1,0 +1,66 @@
+#pragma once
+// Forward kinematics of several configurations at once, structure-of-arrays: every number of the
+// computation is a short array over the configurations (lanes), so the compiler turns each step
+// into one SIMD instruction over all lanes. The kernels see plain double arrays only (no Eigen
+// types: see DESIGN.md's traps); an AVX2 build of them is chosen at run time on CPUs that have it,
+// the SSE2 baseline runs on any x86-64. Mimic joints follow their source joint as in
+// ForwardKinematics::jointValues; results equal ForwardKinematics's to rounding (the fast checker's
+// sphere margin absorbs the difference).
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "pmdplan/model/robot_model.hpp"
+
+namespace pmdplan {
+
+class BatchedForwardKinematics {
+public:
+  static constexpr int kLanes = 4;       ///< configurations per batch
+  static constexpr int kPoseValues = 12;  ///< row-major rotation (9) then translation (3)
+
+  BatchedForwardKinematics(const RobotModel& model, const Eigen::Isometry3d& base = Eigen::Isometry3d::Identity());
+
+  int dof() const { return dof_; }
+  int linkCount() const { return linkCount_; }
+  /// Doubles needed for the poses of a batch (links x 12 x kLanes) and of one configuration.
+  std::size_t batchPoseSize() const { return static_cast<std::size_t>(linkCount_) * kPoseValues * kLanes; }
+  std::size_t singlePoseSize() const { return static_cast<std::size_t>(linkCount_) * kPoseValues; }
+
+  /// jointsByLane[i * kLanes + lane] = active joint i of configuration `lane`;
+  /// poses[(link * 12 + value) * kLanes + lane] = world pose of the link.
+  void computeBatch(const double* jointsByLane, double* poses) const;
+  /// One configuration (dof values); poses[link * 12 + value].
+  void computeOne(const double* q, double* poses) const;
+
+  /// Whether the AVX2 kernels run on this CPU (else the SSE2 ones).
+  static bool usesAvx2();
+
+  /// One joint of the tree walk, in plain numbers (parents before children).
+  struct Step {
+    int parentLink = 0, childLink = 0;
+    int motion = 0;  ///< 0 fixed, 1 revolute, 2 prismatic
+    int axisZ = 0;   ///< +1 / -1 when the axis is +z / -z (the common, cheaper case), else 0
+    int joint = 0;   ///< index into RobotModel::joints()
+    double origin[kPoseValues] = {};
+    double axis[3] = {0, 0, 1};
+  };
+  /// Where each joint's value comes from.
+  struct ValueSource {
+    int activeIndex = -1;  ///< >= 0: the configuration's value
+    int mimicSource = -1;  ///< >= 0: multiplier * value of that joint + offset
+    double multiplier = 1.0, offset = 0.0;
+  };
+  struct Plan {
+    int linkCount = 0, jointCount = 0, rootLink = 0;
+    double base[kPoseValues] = {};
+    std::vector<Step> steps;
+    std::vector<ValueSource> values;
+  };
+
+private:
+  int dof_ = 0;
+  int linkCount_ = 0;
+  Plan plan_;
+};
+
+}  // namespace pmdplan

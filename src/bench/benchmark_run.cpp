@@ -1,0 +1,81 @@
+#include "pmdplan/bench/benchmark_run.hpp"
+
+#include <chrono>
+
+#include "pmdplan/bench/human_likeness.hpp"
+#include "pmdplan/bench/ompl_planning.hpp"
+#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/planning/path_smoothing.hpp"
+#include "pmdplan/planning/task_planning.hpp"
+#include "pmdplan/synergy/synergy_model.hpp"
+
+namespace pmdplan {
+namespace {
+
+RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record, double timeLimitSeconds) {
+  TaskPlanningOptions options;
+  options.mode = planner.mode;
+  options.parameters = PlannerParameters::defaultsFor(planner.mode);
+  options.parameters.seed = record.seed;
+  options.parameters.timeLimit = timeLimitSeconds;
+  options.synergies = &bench.synergies();
+  const TaskPlanningResult result = planTask(bench.task(), bench.checking(), options);
+  const PlanningStatistics& s = result.statistics;
+  record.solved = s.solved();
+  record.planningTimeSeconds = s.planningTime;
+  record.smoothingTimeSeconds = s.smoothingTime;
+  record.samples = s.samples;
+  record.roadmapNodes = s.roadmapNodes;
+  record.collisionChecks = s.collisionChecks();
+  if (record.solved) assessPath(bench, result.path, record);
+  else record.failure = "not solved: " + plannerStatusName(s.status);
+  return record;
+}
+
+RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord record, double timeLimitSeconds) {
+  const Task& task = bench.task();
+  MotionValidator& motions = bench.checking().motions();
+  const OmplPlanningResult result = planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions,
+                                                 task.start, task.goal, timeLimitSeconds, record.seed);
+  record.solved = result.solved;
+  record.planningTimeSeconds = result.planningTimeSeconds;
+  record.samples = result.stateChecks;
+  record.roadmapNodes = result.graphStates;
+  record.collisionChecks = result.stateChecks + result.motionChecks;
+  if (!record.solved) {
+    record.failure = "not solved: " + result.status;
+    return record;
+  }
+  const std::size_t motionChecksBefore = motions.statesChecked();
+  const auto began = std::chrono::steady_clock::now();
+  const std::vector<Configuration> smoothed = smoothPath(result.path, bench.space(), motions);
+  record.smoothingTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  record.collisionChecks += motions.statesChecked() - motionChecksBefore;
+  assessPath(bench, smoothed, record);
+  return record;
+}
+
+}  // namespace
+
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, std::uint64_t seed, double timeLimitSeconds) {
+  RunRecord record;
+  record.task = bench.task().name;
+  record.planner = planner.name;
+  record.run = run;
+  record.seed = seed;
+  return planner.family == PlannerFamily::Ompl ? runOmpl(bench, planner, record, timeLimitSeconds)
+                                               : runPmdRoadmap(bench, planner, record, timeLimitSeconds);
+}
+
+void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record) {
+  record.pathNodes = path.size();
+  record.pathLength = path.empty() ? 0.0 : pathLength(path, bench.space());
+  if (!path.empty()) record.humanLikeness = measureHumanLikeness(path, bench.space(), bench.synergies(), bench.synergySlots());
+  const PathValidation validation =
+      validatePath(bench.validationChecker(), bench.validationSegments(), path, bench.task().start, bench.task().goal);
+  record.valid = validation.valid;
+  if (!validation.valid)
+    record.failure = "invalid path: " + (validation.problems.empty() ? std::string("rejected by validation") : validation.problems.front());
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,114 @@
+#include "pmdplan/bench/campaign.hpp"
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "pmdplan/bench/benchmark_run.hpp"
+#include "pmdplan/bench/campaign_ranks.hpp"
+#include "pmdplan/bench/forked_run.hpp"
+#include "pmdplan/bench/planner_roster.hpp"
+#include "pmdplan/bench/task_bench.hpp"
+#include "pmdplan/core/data_directory.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/synergy/synergy_model_file.hpp"
+
+namespace pmdplan {
+
+std::vector<CampaignJob> campaignJobs(const BenchOptions& options) {
+  std::vector<CampaignJob> jobs;
+  for (std::size_t t = 0; t < options.tasks.size(); ++t)
+    for (std::size_t p = 0; p < options.planners.size(); ++p)
+      for (int r = 0; r < options.runs; ++r) jobs.push_back({t, p, r});
+  return jobs;
+}
+
+std::vector<std::size_t> jobsOfRank(std::size_t jobCount, int rank, int ranks) {
+  if (ranks < 1 || rank < 0 || rank >= ranks) throw std::invalid_argument("jobsOfRank: rank out of range");
+  std::vector<std::size_t> mine;
+  for (std::size_t j = static_cast<std::size_t>(rank); j < jobCount; j += static_cast<std::size_t>(ranks)) mine.push_back(j);
+  return mine;
+}
+
+CampaignInputs loadCampaignInputs(const BenchOptions& options) {
+  std::vector<Task> tasks;
+  for (const auto& name : options.tasks) tasks.push_back(loadTaskByName(name));
+  CampaignInputs inputs;
+  const std::filesystem::path file = options.synergies.empty()
+                                         ? dataDirectory() / "synergies" / (tasks.front().robot->name() + "_default.yaml")
+                                         : options.synergies;
+  inputs.synergies = std::make_unique<SynergyModel>(loadSynergyModel(file));
+  inputs.synergyFile = file.string();
+  for (Task& task : tasks)
+    inputs.tasks.push_back(std::make_unique<TaskBench>(std::move(task), options.checker, options.toleranceMetres, *inputs.synergies,
+                                                       inputs.synergyFile));
+  return inputs;
+}
+
+std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
+                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress) {
+  const std::vector<CampaignJob> jobs = campaignJobs(options);
+  std::vector<PlannerEntry> planners;
+  for (const auto& name : options.planners) {
+    const auto entry = findPlanner(name);
+    if (!entry) throw InputError("", "--planners", "'" + name + "' is not a planner; known planners: " + knownPlannerNames());
+    planners.push_back(*entry);
+  }
+  std::vector<RunRecord> records;
+  for (const std::size_t index : jobIndices) {
+    const CampaignJob& job = jobs.at(index);
+    TaskBench* bench = inputs.tasks.at(job.task).get();
+    const PlannerEntry& planner = planners.at(job.planner);
+    const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(job.run);
+    const auto began = std::chrono::steady_clock::now();
+    const ChildOutcome outcome = runInChildProcess(
+        [&] { return encodeRunRecord(runPlannerOnce(*bench, planner, job.run, seed, options.timeLimit)); },
+        options.timeLimit + options.graceSeconds);
+    std::optional<RunRecord> record;
+    if (outcome.finished()) record = decodeRunRecord(outcome.output);
+    if (!record) {
+      record = RunRecord{};
+      record->task = bench->task().name;
+      record->planner = planner.name;
+      record->run = job.run;
+      record->seed = seed;
+      record->failure = outcome.finished() ? "error: unreadable result from the run" : outcome.problem;
+      // Where the run stopped, so tables and plots show a killed run at its limit, not at zero.
+      record->planningTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    }
+    records.push_back(*record);
+    if (progress) progress(records.size(), jobIndices.size(), records.back());
+  }
+  return records;
+}
+
+std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, const CampaignRanks& ranks,
+                                   const CampaignProgress& progress) {
+  const std::size_t jobCount = campaignJobs(options).size();
+  const std::vector<std::size_t> mine = jobsOfRank(jobCount, ranks.rank(), ranks.size());
+  const std::vector<RunRecord> records = runCampaignJobs(options, inputs, mine, progress);
+  std::string text;
+  for (std::size_t i = 0; i < records.size(); ++i) text += std::to_string(mine[i]) + "\t" + encodeRunRecord(records[i]) + "\n";
+  const std::vector<std::string> parts = ranks.gatherToFirst(text);
+  if (!ranks.first()) return {};
+  std::map<std::size_t, RunRecord> byJob;
+  for (const std::string& part : parts) {
+    std::size_t start = 0;
+    while (start < part.size()) {
+      const std::size_t end = part.find('\n', start);
+      const std::string line = part.substr(start, end - start);
+      start = end == std::string::npos ? part.size() : end + 1;
+      const std::size_t tab = line.find('\t');
+      const auto record = tab == std::string::npos ? std::nullopt : decodeRunRecord(line.substr(tab + 1));
+      if (!record) throw std::runtime_error("runCampaign: a rank sent an unreadable record");
+      byJob[std::stoul(line.substr(0, tab))] = *record;
+    }
+  }
+  if (byJob.size() != jobCount) throw std::runtime_error("runCampaign: records of some jobs are missing");
+  std::vector<RunRecord> all;
+  for (auto& [index, record] : byJob) all.push_back(std::move(record));
+  return all;
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,32 @@
+#include "pmdplan/bench/planner_roster.hpp"
+
+namespace pmdplan {
+
+const std::vector<PlannerEntry>& plannerRoster() {
+  static const std::vector<PlannerEntry> roster = {
+      {"pmd", PlannerFamily::PmdRoadmap, HandSamplingMode::Synergy, "", "the paper's planner, hands from the PMD subspace"},
+      {"full", PlannerFamily::PmdRoadmap, HandSamplingMode::FullSpace, "", "the same roadmap, hands over the whole joint box"},
+      {"ompl:RRTConnect", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRTConnect", "OMPL bidirectional RRT"},
+      {"ompl:PRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "PRM", "OMPL probabilistic roadmap"},
+      {"ompl:LazyPRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "LazyPRM", "OMPL PRM with lazy edge checks"},
+      {"ompl:KPIECE1", PlannerFamily::Ompl, HandSamplingMode::Synergy, "KPIECE1", "OMPL KPIECE"},
+      {"ompl:BKPIECE1", PlannerFamily::Ompl, HandSamplingMode::Synergy, "BKPIECE1", "OMPL bidirectional KPIECE"},
+      {"ompl:EST", PlannerFamily::Ompl, HandSamplingMode::Synergy, "EST", "OMPL expansive space trees"},
+      {"ompl:RRT", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRT", "OMPL RRT"},
+  };
+  return roster;
+}
+
+std::optional<PlannerEntry> findPlanner(const std::string& name) {
+  for (const auto& entry : plannerRoster())
+    if (entry.name == name) return entry;
+  return std::nullopt;
+}
+
+std::string knownPlannerNames() {
+  std::string names;
+  for (const auto& entry : plannerRoster()) names += (names.empty() ? "" : ", ") + entry.name;
+  return names;
+}
+
+}  // namespace pmdplan

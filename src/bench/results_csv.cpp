@@ -1,0 +1,46 @@
+#include "pmdplan/bench/results_csv.hpp"
+
+#include <charconv>
+
+namespace pmdplan {
+namespace {
+
+std::string number(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+const std::vector<std::string>& timingCsvColumns() {
+  static const std::vector<std::string> columns = {"planning_time_s", "smoothing_time_s"};
+  return columns;
+}
+
+std::string runRecordsCsv(const std::vector<RunRecord>& records) {
+  std::string csv =
+      "task,planner,run,seed,solved,planning_time_s,smoothing_time_s,valid,samples,roadmap_nodes,path_nodes,path_length,"
+      "collision_checks,subspace_distance_mean,subspace_distance_max,mahalanobis_mean,failure\n";
+  for (const RunRecord& r : records) {
+    const bool hasPath = r.solved;
+    csv += csvField(r.task) + "," + csvField(r.planner) + "," + std::to_string(r.run) + "," + std::to_string(r.seed) + "," +
+           (r.solved ? "1" : "0") + "," + number(r.planningTimeSeconds) + "," + number(r.smoothingTimeSeconds) + "," +
+           (r.valid ? "1" : "0") + "," + std::to_string(r.samples) + "," + std::to_string(r.roadmapNodes) + "," +
+           (hasPath ? std::to_string(r.pathNodes) : "") + "," + (hasPath ? number(r.pathLength) : "") + "," +
+           std::to_string(r.collisionChecks) + "," +
+           (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMean) : "") + "," +
+           (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMax) : "") + "," +
+           (r.humanLikeness ? number(r.humanLikeness->mahalanobisMean) : "") + "," + csvField(r.failure) + "\n";
+  }
+  return csv;
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,110 @@
+#include "pmdplan/bench/run_record.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+namespace pmdplan {
+namespace {
+
+// Fields are separated by a tab; text fields have tabs, newlines and backslashes escaped.
+constexpr char kSeparator = '\t';
+
+std::string escapedText(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\\') out += "\\\\";
+    else if (c == '\t') out += "\\t";
+    else if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else out += c;
+  }
+  return out;
+}
+
+std::optional<std::string> unescapedText(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\\') {
+      out += text[i];
+      continue;
+    }
+    if (++i >= text.size()) return std::nullopt;
+    const char c = text[i];
+    if (c == '\\') out += '\\';
+    else if (c == 't') out += '\t';
+    else if (c == 'n') out += '\n';
+    else if (c == 'r') out += '\r';
+    else return std::nullopt;
+  }
+  return out;
+}
+
+std::string number(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+template <typename T>
+std::string number(T value) {
+  return std::to_string(value);
+}
+
+template <typename T>
+bool parse(const std::string& text, T& value) {
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  return result.ec == std::errc() && result.ptr == text.data() + text.size();
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields(1);
+  for (const char c : line) {
+    if (c == kSeparator) fields.emplace_back();
+    else fields.back() += c;
+  }
+  return fields;
+}
+
+}  // namespace
+
+std::string encodeRunRecord(const RunRecord& r) {
+  const std::vector<std::string> fields = {
+      "run-record-1", escapedText(r.task), escapedText(r.planner), number(r.run), number(r.seed), r.solved ? "1" : "0",
+      r.valid ? "1" : "0", number(r.planningTimeSeconds), number(r.smoothingTimeSeconds), number(r.samples),
+      number(r.roadmapNodes), number(r.pathNodes), number(r.pathLength), number(r.collisionChecks),
+      r.humanLikeness ? "1" : "0", number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0),
+      number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0),
+      number(r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0), escapedText(r.failure)};
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? std::string(1, kSeparator) : "") + fields[i];
+  return line;
+}
+
+std::optional<RunRecord> decodeRunRecord(const std::string& text) {
+  const auto f = split(text);
+  if (f.size() != 19 || f[0] != "run-record-1") return std::nullopt;
+  RunRecord r;
+  const auto task = unescapedText(f[1]), planner = unescapedText(f[2]), failure = unescapedText(f[18]);
+  if (!task || !planner || !failure) return std::nullopt;
+  r.task = *task;
+  r.planner = *planner;
+  r.failure = *failure;
+  const auto flag = [](const std::string& s, bool& value) {
+    if (s != "0" && s != "1") return false;
+    value = s == "1";
+    return true;
+  };
+  bool hasHumanLikeness = false;
+  HumanLikeness h;
+  const bool ok = parse(f[3], r.run) && parse(f[4], r.seed) && flag(f[5], r.solved) && flag(f[6], r.valid) &&
+                  parse(f[7], r.planningTimeSeconds) && parse(f[8], r.smoothingTimeSeconds) && parse(f[9], r.samples) &&
+                  parse(f[10], r.roadmapNodes) && parse(f[11], r.pathNodes) && parse(f[12], r.pathLength) &&
+                  parse(f[13], r.collisionChecks) && flag(f[14], hasHumanLikeness) && parse(f[15], h.subspaceDistanceMean) &&
+                  parse(f[16], h.subspaceDistanceMax) && parse(f[17], h.mahalanobisMean);
+  if (!ok) return std::nullopt;
+  if (hasHumanLikeness) r.humanLikeness = h;
+  return r;
+}
+
+}  // namespace pmdplan

@@ -1,0 +1,52 @@
+#include "pmdplan/bench/run_summary.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <numeric>
+
+namespace pmdplan {
+
+MetricSummary summariseValues(std::vector<double> values) {
+  MetricSummary summary;
+  summary.count = values.size();
+  if (values.empty()) return summary;
+  summary.mean = std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  summary.median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  return summary;
+}
+
+RunSummary summariseRuns(const std::vector<RunRecord>& records, const std::string& task, const std::string& planner) {
+  RunSummary s;
+  s.task = task;
+  s.planner = planner;
+  std::vector<const RunRecord*> successes;
+  for (const RunRecord& r : records) {
+    if (r.task != task || r.planner != planner) continue;
+    ++s.runs;
+    s.solved += r.solved;
+    if (r.succeeded()) {
+      ++s.succeeded;
+      successes.push_back(&r);
+    }
+  }
+  const auto metric = [&](const std::function<double(const RunRecord&)>& value) {
+    std::vector<double> values;
+    for (const RunRecord* r : successes) values.push_back(value(*r));
+    return summariseValues(values);
+  };
+  s.planningTime = metric([](const RunRecord& r) { return r.planningTimeSeconds; });
+  s.smoothingTime = metric([](const RunRecord& r) { return r.smoothingTimeSeconds; });
+  s.samples = metric([](const RunRecord& r) { return static_cast<double>(r.samples); });
+  s.roadmapNodes = metric([](const RunRecord& r) { return static_cast<double>(r.roadmapNodes); });
+  s.pathNodes = metric([](const RunRecord& r) { return static_cast<double>(r.pathNodes); });
+  s.pathLength = metric([](const RunRecord& r) { return r.pathLength; });
+  s.collisionChecks = metric([](const RunRecord& r) { return static_cast<double>(r.collisionChecks); });
+  s.subspaceDistanceMean = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0; });
+  s.subspaceDistanceMax = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0; });
+  s.mahalanobisMean = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0; });
+  return s;
+}
+
+}  // namespace pmdplan

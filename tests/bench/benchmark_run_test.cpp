@@ -1,0 +1,84 @@
+#include "pmdplan/bench/benchmark_run.hpp"
+
+#include <gtest/gtest.h>
+
+#include "pmdplan/bench/forked_run.hpp"
+#include "pmdplan/synergy/synergy_model_file.hpp"
+
+namespace pmdplan {
+namespace {
+
+const std::string kSynergyFile = std::string(PMDPLAN_TEST_DATA_DIR) + "/synergies/sah_tx90_default.yaml";
+
+class BenchmarkRun : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    synergies_ = new SynergyModel(loadSynergyModel(kSynergyFile));
+    bench_ = new TaskBench(loadTaskByName("can_on_table"), CheckerKind::Exact, 0.001, *synergies_, kSynergyFile);
+  }
+  static void TearDownTestSuite() {
+    delete bench_;
+    delete synergies_;
+  }
+  static SynergyModel* synergies_;
+  static TaskBench* bench_;
+};
+SynergyModel* BenchmarkRun::synergies_ = nullptr;
+TaskBench* BenchmarkRun::bench_ = nullptr;
+
+TEST_F(BenchmarkRun, APathThroughTheCanIsAFailureEvenWhenThePlannerSaidSolved) {
+  RunRecord record;
+  record.solved = true;
+  // The straight start-goal segment hits the can.
+  assessPath(*bench_, {bench_->task().start, bench_->task().goal}, record);
+  EXPECT_FALSE(record.valid);
+  EXPECT_FALSE(record.succeeded());
+  EXPECT_EQ(record.failure.rfind("invalid path: ", 0), 0u) << record.failure;
+  EXPECT_EQ(record.pathNodes, 2u);
+  EXPECT_GT(record.pathLength, 0.0);
+  EXPECT_TRUE(record.humanLikeness.has_value());
+}
+
+TEST_F(BenchmarkRun, APathThatMissesTheGoalIsAFailure) {
+  RunRecord record;
+  record.solved = true;
+  assessPath(*bench_, {bench_->task().start, bench_->task().start}, record);
+  EXPECT_FALSE(record.valid);
+  EXPECT_NE(record.failure.find("goal"), std::string::npos) << record.failure;
+}
+
+TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
+  const RunRecord r = runPlannerOnce(*bench_, *findPlanner("pmd"), 1, 2, 30.0);
+  EXPECT_EQ(r.task, "can_on_table");
+  EXPECT_EQ(r.planner, "pmd");
+  EXPECT_EQ(r.seed, 2u);
+  ASSERT_TRUE(r.succeeded()) << r.failure;
+  EXPECT_TRUE(r.failure.empty());
+  EXPECT_GE(r.pathNodes, 2u);
+  EXPECT_GT(r.collisionChecks, 0u);
+  ASSERT_TRUE(r.humanLikeness.has_value());
+  // Its samples lie in the PMD subspace; only the start and goal postures are off it.
+  EXPECT_LT(r.humanLikeness->subspaceDistanceMean, 0.1);
+}
+
+TEST_F(BenchmarkRun, AnOmplPlannerSolvesInAForkedChildAndTheSameSeedGivesTheSameRun) {
+  const auto once = [&] {
+    return runInChildProcess([&] { return encodeRunRecord(runPlannerOnce(*bench_, *findPlanner("ompl:RRTConnect"), 0, 3, 30.0)); },
+                             120.0);
+  };
+  const ChildOutcome first = once(), second = once();
+  ASSERT_TRUE(first.finished()) << first.problem;
+  ASSERT_TRUE(second.finished()) << second.problem;
+  auto a = decodeRunRecord(first.output), b = decodeRunRecord(second.output);
+  ASSERT_TRUE(a && b);
+  ASSERT_TRUE(a->succeeded()) << a->failure;
+  EXPECT_GT(a->roadmapNodes, 0u);
+  EXPECT_GT(a->samples, 0u);
+  EXPECT_GT(a->smoothingTimeSeconds, 0.0);  // our smoothing ran on OMPL's path
+  a->planningTimeSeconds = b->planningTimeSeconds = 0.0;
+  a->smoothingTimeSeconds = b->smoothingTimeSeconds = 0.0;
+  EXPECT_EQ(encodeRunRecord(*a), encodeRunRecord(*b));
+}
+
+}  // namespace
+}  // namespace pmdplan

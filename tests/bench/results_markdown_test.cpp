@@ -1,0 +1,27 @@
+#include "pmdplan/bench/results_markdown.hpp"
+
+#include <gtest/gtest.h>
+
+#include "record_samples.hpp"
+
+namespace pmdplan {
+namespace {
+
+TEST(ResultsMarkdown, OneTablePerTaskWithPlannersAsColumnsAndMetricsAsRows) {
+  const std::vector<RunRecord> records = {test::successfulRun("can_on_table", "pmd", 0, 1.0),
+                                          test::successfulRun("can_on_table", "pmd", 1, 3.0),
+                                          test::failedRun("can_on_table", "ompl:RRT", 0, "not solved: Timeout"),
+                                          test::successfulRun("can_in_box", "pmd", 0, 0.25)};
+  const std::string md = benchMarkdown(records, {"can_on_table", "can_in_box"}, {"pmd", "ompl:RRT"});
+  EXPECT_NE(md.find("### can_on_table\n\n| metric | pmd | ompl:RRT |\n|---|---|---|\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("| success (solved and valid) | 2/2 (100 %) | 0/1 (0 %) |"), std::string::npos) << md;
+  // mean (median) over the successes; a planner without any shows a dash.
+  EXPECT_NE(md.find("| planning time [s] | 2.00 (2.00) | – |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Mahalanobis distance, mean | 2.00 (2.00) | – |"), std::string::npos) << md;
+  EXPECT_NE(md.find("### can_in_box"), std::string::npos);
+  EXPECT_NE(md.find("| success (solved and valid) | 1/1 (100 %) | 0/0 (0 %) |"), std::string::npos) << md;
+  EXPECT_LT(md.find("### can_on_table"), md.find("### can_in_box"));
+}
+
+}  // namespace
+}  // namespace pmdplan

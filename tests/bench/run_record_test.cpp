@@ -1,0 +1,81 @@
+#include "pmdplan/bench/run_record.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace pmdplan {
+namespace {
+
+RunRecord solvedRecord() {
+  RunRecord r;
+  r.task = "can_on_table";
+  r.planner = "ompl:RRTConnect";
+  r.run = 3;
+  r.seed = 4;
+  r.solved = true;
+  r.valid = true;
+  r.planningTimeSeconds = 0.1 + 0.2;  // not a short decimal: must come back bit for bit
+  r.smoothingTimeSeconds = 1.0 / 3.0;
+  r.samples = 1234;
+  r.roadmapNodes = 77;
+  r.pathNodes = 5;
+  r.pathLength = std::sqrt(2.0);
+  r.collisionChecks = 987654321;
+  r.humanLikeness = HumanLikeness{0.0123456789, 0.5, 3.75};
+  return r;
+}
+
+TEST(RunRecord, EncodingRestoresEveryFieldExactly) {
+  const RunRecord r = solvedRecord();
+  const std::string text = encodeRunRecord(r);
+  EXPECT_EQ(text.find('\n'), std::string::npos);
+  const auto back = decodeRunRecord(text);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->task, r.task);
+  EXPECT_EQ(back->planner, r.planner);
+  EXPECT_EQ(back->run, 3);
+  EXPECT_EQ(back->seed, 4u);
+  EXPECT_TRUE(back->solved);
+  EXPECT_TRUE(back->valid);
+  EXPECT_EQ(back->planningTimeSeconds, r.planningTimeSeconds);
+  EXPECT_EQ(back->smoothingTimeSeconds, r.smoothingTimeSeconds);
+  EXPECT_EQ(back->samples, 1234u);
+  EXPECT_EQ(back->roadmapNodes, 77u);
+  EXPECT_EQ(back->pathNodes, 5u);
+  EXPECT_EQ(back->pathLength, r.pathLength);
+  EXPECT_EQ(back->collisionChecks, 987654321u);
+  ASSERT_TRUE(back->humanLikeness.has_value());
+  EXPECT_EQ(back->humanLikeness->subspaceDistanceMean, 0.0123456789);
+  EXPECT_EQ(back->humanLikeness->mahalanobisMean, 3.75);
+  EXPECT_TRUE(back->succeeded());
+}
+
+TEST(RunRecord, FailureTextWithTabsAndNewlinesSurvives) {
+  RunRecord r;
+  r.task = "odd\ttask";
+  r.planner = "pmd";
+  r.failure = "invalid path: segment 3\n(2 -> 3)\tcollides \\ here";
+  const std::string text = encodeRunRecord(r);
+  EXPECT_EQ(text.find('\n'), std::string::npos);
+  const auto back = decodeRunRecord(text);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->task, r.task);
+  EXPECT_EQ(back->failure, r.failure);
+  EXPECT_FALSE(back->humanLikeness.has_value());
+  EXPECT_FALSE(back->succeeded());
+}
+
+TEST(RunRecord, RejectsTextThatIsNotARecord) {
+  EXPECT_FALSE(decodeRunRecord("").has_value());
+  EXPECT_FALSE(decodeRunRecord("hello").has_value());
+  std::string text = encodeRunRecord(solvedRecord());
+  EXPECT_FALSE(decodeRunRecord(text + "\textra").has_value());
+  const auto firstNumber = text.find("\t3\t");
+  ASSERT_NE(firstNumber, std::string::npos);
+  text.replace(firstNumber, 3, "\tx\t");
+  EXPECT_FALSE(decodeRunRecord(text).has_value());
+}
+
+}  // namespace
+}  // namespace pmdplan

@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+
+#include "support/run_cli.hpp"
+#include "support/temp_dir.hpp"
+
+namespace pmdplan {
+namespace {
+
+using test::contents;
+using test::quoted;
+using test::runCli;
+
+// The CI form of the campaign: short, on the exact checker (the same answers as the fast one).
+const std::string kCampaign =
+    "bench can_on_table --planners pmd,ompl:RRTConnect --runs 4 --seed 1 --time-limit 20";
+
+/// The CSV without its timing columns (planning_time_s, smoothing_time_s: the 6th and 7th).
+std::string withoutTimings(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string result;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> fields(1);
+    for (const char c : line) {
+      if (c == ',') fields.emplace_back();
+      else fields.back() += c;
+    }
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      if (i != 5 && i != 6) result += fields[i] + (i + 1 < fields.size() ? "," : "");
+    result += "\n";
+  }
+  return result;
+}
+
+void expectBadInput(const std::string& arguments, const std::string& field, const std::string& message) {
+  const auto result = runCli(arguments);
+  EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.out << result.err;
+  EXPECT_NE(result.err.find(field), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(message), std::string::npos) << result.err;
+}
+
+TEST(BenchCli, AnUnknownPlannerIsBadInputThatListsTheKnownOnes) {
+  expectBadInput("bench can_on_table --planners pmd,RRTConnect", "--planners",
+                 "'RRTConnect' is not a planner; known planners: pmd, full, ompl:RRTConnect, ompl:PRM");
+}
+
+TEST(BenchCli, ZeroOrNegativeRunsAreBadInput) {
+  expectBadInput("bench can_on_table --runs 0", "--runs", "expected a whole number of runs >= 1");
+  expectBadInput("bench can_on_table --runs -2", "--runs", ">= 1");
+}
+
+TEST(BenchCli, AMissingTaskIsBadInput) {
+  const auto result = runCli("bench can_on_table no_such_task --runs 1");
+  EXPECT_EQ(result.exitCode, 2) << result.out << result.err;
+  EXPECT_NE(result.err.find("no_such_task"), std::string::npos) << result.err;
+}
+
+TEST(BenchCli, ABadTimeLimitSeedCheckerToleranceOrGraceIsBadInput) {
+  expectBadInput("bench can_on_table --time-limit 0", "--time-limit", "positive");
+  expectBadInput("bench can_on_table --time-limit -5", "--time-limit", "positive");
+  EXPECT_EQ(runCli("bench can_on_table --time-limit soon").exitCode, 2);
+  expectBadInput("bench can_on_table --seed 0", "--seed", ">= 1");
+  expectBadInput("bench can_on_table --checker fastest", "--checker", "expected exact or fast");
+  expectBadInput("bench can_on_table --tolerance-mm 0", "--tolerance-mm", "positive");
+  expectBadInput("bench can_on_table --grace -5", "--grace", "non-negative");
+}
+
+TEST(BenchCli, WritesEveryOutputAndTheOmplLogLoadsWhenTheReaderIsInstalled) {
+  test::TempDir dir;
+  const auto csv = dir.path() / "runs.csv", md = dir.path() / "table.md", log = dir.path() / "runs.log",
+             plot = dir.path() / "time.svg";
+  const auto result = runCli(dir, "bench can_on_table --planners pmd,ompl:RRTConnect --runs 2 --time-limit 20 --csv " +
+                                      quoted(csv) + " --markdown " + quoted(md) + " --ompl-log " + quoted(log) + " --plot " +
+                                      quoted(plot));
+  ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
+  EXPECT_NE(result.out.find("| success (solved and valid) | 2/2 (100 %) | 2/2 (100 %) |"), std::string::npos) << result.out;
+  EXPECT_EQ(contents(md), result.out.substr(0, contents(md).size()));
+  EXPECT_EQ(contents(csv).rfind("task,planner,run,seed,solved,planning_time_s,smoothing_time_s,", 0), 0u);
+  EXPECT_NE(contents(log).find("geometric_RRTConnect\n"), std::string::npos);
+  EXPECT_NE(contents(plot).find("<svg"), std::string::npos);
+  EXPECT_NE(contents(plot).find(">can_on_table</text>"), std::string::npos);
+
+  // Debian's ompl-demos ships the reader; when it is installed, load the log into its database.
+  if (std::system("command -v ompl_benchmark_statistics >/dev/null 2>&1") != 0) return;
+  const auto db = dir.path() / "runs.db";
+  ASSERT_EQ(std::system(("ompl_benchmark_statistics " + quoted(log) + " -d " + quoted(db) + " >/dev/null").c_str()), 0);
+  const std::string query = "python3 -c \"import sqlite3,sys; c=sqlite3.connect(sys.argv[1]); "
+                            "sys.exit(0 if c.execute('select count(*) from runs where solved=1').fetchone()[0]==4 else 1)\" " +
+                            quoted(db);
+  EXPECT_EQ(std::system(query.c_str()), 0);
+}
+
+#ifdef PMDPLAN_MPIEXEC
+TEST(BenchCli, TwoMpiRanksGiveTheOneProcessCsvTimingsAside) {
+  test::TempDir dir;
+  const auto single = dir.path() / "single.csv", split = dir.path() / "split.csv";
+  const auto one = runCli(dir, kCampaign + " --csv " + quoted(single));
+  ASSERT_EQ(one.exitCode, 0) << one.out << one.err;
+  // As root OpenMPI wants --allow-run-as-root; --oversubscribe lets 2 ranks run on any machine.
+  const std::string launcher = std::string(PMDPLAN_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") +
+                               " --oversubscribe -np 2 " + quoted(PMDPLAN_CLI_PATH) + " " + kCampaign + " --csv " + quoted(split) +
+                               " >" + quoted(dir.path() / "mpi.out") + " 2>&1";
+  ASSERT_EQ(std::system(launcher.c_str()), 0) << contents(dir.path() / "mpi.out");
+  EXPECT_NE(contents(dir.path() / "mpi.out").find("8 runs in"), std::string::npos);
+  const std::string a = contents(single), b = contents(split);
+  EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 9);
+  EXPECT_EQ(withoutTimings(a), withoutTimings(b));
+  EXPECT_NE(a.find("\ncan_on_table,ompl:RRTConnect,3,4,1,"), std::string::npos) << a;
+}
+#endif
+
+}  // namespace
+}  // namespace pmdplan
