@@ -1,10 +1,10 @@
-// Exact (FCL) against fast (sphere stage + FCL on flagged pairs) collision checks, side by side in
+// Exact (FCL) against fast (convex parts, FCL only within the band of touching) collision checks, side by side in
 // one run, on two mixes of configurations per task:
 //   plan   - the states a real PMD plan of the task checks (samples and motion-check states,
 //            recorded from one seeded run), the mix that matters for planning time;
 //   random - the equivalence test's mix: uniform in the limits, near start/goal, near the straight
 //            start-goal segment (about half of them collide).
-// Then segment checks: SegmentChecker on the exact checker against BatchedSegmentChecker on short
+// Then segment checks: SegmentChecker on the exact checker against FastSegmentChecker on short
 // planner-like segments. After the Google Benchmark table, a summary prints the exact/fast ratio
 // of every pair of benchmarks.
 //
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "pmdplan/collision/batched_segment_checker.hpp"
+#include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/core/data_directory.hpp"
@@ -142,7 +142,7 @@ void checkStates(benchmark::State& state, const std::string& name, bool fast, in
 void checkSegments(benchmark::State& state, const std::string& name, bool fast) {
   auto& d = taskData(name);
   SegmentChecker slow(*d.exact, *d.task.robot);
-  BatchedSegmentChecker batched(*d.fast, *d.task.robot, SegmentChecker::kDefaultTolerance);
+  FastSegmentChecker batched(*d.fast, *d.task.robot, SegmentChecker::kDefaultTolerance);
   MotionValidator& motions = fast ? static_cast<MotionValidator&>(batched) : slow;
   std::size_t i = 0, free = 0;
   for (auto _ : state) {

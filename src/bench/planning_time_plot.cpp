@@ -4,40 +4,21 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pmdplan/io/svg_elements.hpp"
+
 namespace pmdplan {
 namespace {
 
-const char* const kFont = "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\"";
 // Colour-blind safe palette (Okabe-Ito plus wine and grey), one colour per planner: the nine
 // known planners get nine colours; more repeat.
 const char* const kColours[] = {"#0072B2", "#E69F00", "#009E73", "#CC79A7", "#56B4E9",
                                 "#D55E00", "#F0E442", "#000000", "#882255", "#999999"};
 
-std::string px(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f", value);
-  return text;
-}
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
+using svg::line;
+using svg::px;
 
 std::string label(double x, double y, const std::string& content, const std::string& attributes = "") {
-  return "<text x=\"" + px(x) + "\" y=\"" + px(y) + "\" " + kFont + " " + attributes + ">" + escaped(content) + "</text>\n";
-}
-
-std::string line(double x1, double y1, double x2, double y2, const std::string& stroke, const std::string& extra = "") {
-  return "<line x1=\"" + px(x1) + "\" y1=\"" + px(y1) + "\" x2=\"" + px(x2) + "\" y2=\"" + px(y2) + "\" stroke=\"" + stroke + "\" " +
-         extra + "/>\n";
+  return svg::text(x, y, content, std::string(svg::kFont) + " " + attributes);
 }
 
 double quantile(const std::vector<double>& sorted, double q) {

@@ -1,15 +1,18 @@
 #include "pmdplan/collision/batched_forward_kinematics.hpp"
 
-#include <bit>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+
+#include "pmdplan/core/portable_math.hpp"
 
 namespace pmdplan {
 namespace {
 
 using Plan = BatchedForwardKinematics::Plan;
 constexpr int kValues = BatchedForwardKinematics::kPoseValues;
+constexpr int kMaxPacked = 32;  ///< joints whose sines are computed together
 
 void toPlain(const Eigen::Isometry3d& pose, double* out) {
   for (int r = 0; r < 3; ++r) {
@@ -18,89 +21,97 @@ void toPlain(const Eigen::Isometry3d& pose, double* out) {
   }
 }
 
-// sin and cos without library calls, so a loop over lanes vectorises: x = k pi/2 + r with |r| <=
-// pi/4 (Cody-Waite, three parts of pi/2: exact for |x| < 1e5), Taylor series to r^17 / r^18 (the
-// next terms are below 1e-19), quadrant from the low bits of k.
-[[gnu::always_inline]] inline void sinCos(double x, double& s, double& c) {
-  constexpr double kTwoOverPi = 0.63661977236758134308;
-  constexpr double kShifter = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer
-  constexpr double kPio2a = 1.57079632673412561417e+00, kPio2b = 6.07710050630396597660e-11,
-                   kPio2c = 2.02226624879595063154e-21;
-  const double shifted = x * kTwoOverPi + kShifter;
-  const double k = shifted - kShifter;
-  // The low mantissa bits of `shifted` hold k (mod 2^51, two's complement): its quadrant.
-  const std::uint64_t quadrant = std::bit_cast<std::uint64_t>(shifted);
-  const double r = ((x - k * kPio2a) - k * kPio2b) - k * kPio2c;
-  const double r2 = r * r;
-  const double sr =
-      r + r * r2 *
-              (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800 +
-              r2 * (1.0 / 6227020800.0 + r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0))))))));
-  const double cr =
-      1.0 + r2 * (-0.5 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 +
-              r2 * (1.0 / 479001600.0 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0 +
-              r2 * (-1.0 / 6402373705728000.0)))))))));
-  const std::uint64_t swap = 0 - (quadrant & 1);  // all ones in odd quadrants: sin <-> cos
-  const std::uint64_t sb = std::bit_cast<std::uint64_t>(sr), cb = std::bit_cast<std::uint64_t>(cr);
-  const std::uint64_t sinBits = (sb & ~swap) | (cb & swap);
-  const std::uint64_t cosBits = (cb & ~swap) | (sb & swap);
-  s = std::bit_cast<double>(sinBits ^ ((quadrant & 2) << 62));        // negative in quadrants 2, 3
-  c = std::bit_cast<double>(cosBits ^ (((quadrant + 1) & 2) << 62));  // negative in quadrants 1, 2
+/// sin and cos of `count` values, in one loop of independent polynomials (it vectorises; built
+/// for AVX2 and the SSE2 baseline, the loader picks one for the running CPU).
+[[gnu::target_clones("avx2", "default")]] void sinCosArray(const double* x, double* s, double* c, int count) {
+  for (int i = 0; i < count; ++i) portable::sinCos(x[i], s[i], c[i]);
 }
 
-/// sin and cos of N lanes (a separate loop, so it vectorises on its own).
-template <int N>
-[[gnu::always_inline]] inline void sinCosLanes(const double* x, double* s, double* c) {
-  for (int l = 0; l < N; ++l) sinCos(x[l], s[l], c[l]);
-}
-
-/// A pose of N lanes: element i of lane l at v[i][l]. Local copies of these (not pointers into
-/// the pose array) let the compiler keep lanes in registers without aliasing doubts.
+/// A pose of N lanes: element i of lane l at v[i][l].
 template <int N>
 struct LanePose {
   double v[kValues][N];
 };
 
-// The whole walk for N lanes; `values` is scratch for jointCount x N joint values.
+// The whole walk for N lanes; `scratch` holds 3 x jointCount x N values (joint values, sines,
+// cosines). The sines and cosines of all joints come first, in one loop of independent
+// polynomials (they pipeline; inside the walk each would wait for the last).
 template <int N>
-[[gnu::always_inline]] inline void walk(const Plan& plan, const double* q, double* poseArray, double* values) {
+[[gnu::always_inline]] inline void walk(const Plan& plan, const double* q, double* poseArray, double* scratch,
+                                        const std::uint64_t* links = nullptr, int frame = -1) {
+  const auto needed = [links](int link) { return !links || ((links[link >> 6] >> (link & 63)) & 1U); };
   auto* poses = reinterpret_cast<LanePose<N>*>(poseArray);
-  for (int j = 0; j < plan.jointCount; ++j) {
+  const int joints = plan.jointCount;
+  double* __restrict values = scratch;
+  double* __restrict sines = scratch + joints * N;
+  double* __restrict cosines = scratch + 2 * joints * N;
+  for (int j = 0; j < joints; ++j) {
     const auto& v = plan.values[static_cast<std::size_t>(j)];
     for (int l = 0; l < N; ++l) values[j * N + l] = v.activeIndex >= 0 ? q[v.activeIndex * N + l] : 0.0;
   }
-  for (int j = 0; j < plan.jointCount; ++j) {
+  for (int j = 0; j < joints; ++j) {
     const auto& v = plan.values[static_cast<std::size_t>(j)];
     if (v.mimicSource < 0) continue;
     for (int l = 0; l < N; ++l) values[j * N + l] = v.multiplier * values[v.mimicSource * N + l] + v.offset;
   }
-  LanePose<N>& root = poses[plan.rootLink];
+  if (links) {
+    // The needed joints' values side by side, so their polynomials vectorise too.
+    double x[kMaxPacked * N], sx[kMaxPacked * N], cx[kMaxPacked * N];
+    int packed = 0, at[kMaxPacked];
+    const auto flush = [&] {
+      sinCosArray(x, sx, cx, packed * N);
+      for (int k = 0; k < packed; ++k)
+        for (int l = 0; l < N; ++l) sines[at[k] * N + l] = sx[k * N + l], cosines[at[k] * N + l] = cx[k * N + l];
+      packed = 0;
+    };
+    for (const auto& step : plan.steps) {
+      if (step.motion != 1 || !needed(step.childLink)) continue;
+      for (int l = 0; l < N; ++l) x[packed * N + l] = values[step.joint * N + l];
+      at[packed++] = step.joint;
+      if (packed == kMaxPacked) flush();
+    }
+    flush();
+  } else {
+    sinCosArray(values, sines, cosines, joints * N);
+  }
+  LanePose<N>& root = poses[frame >= 0 ? frame : plan.rootLink];
+  constexpr double kIdentity[kValues] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
   for (int i = 0; i < kValues; ++i)
-    for (int l = 0; l < N; ++l) root.v[i][l] = plan.base[i];
+    for (int l = 0; l < N; ++l) root.v[i][l] = frame >= 0 ? kIdentity[i] : plan.base[i];
 
   for (const auto& step : plan.steps) {
-    const LanePose<N> p = poses[step.parentLink];
+    if (!needed(step.childLink)) continue;
+    const LanePose<N>& p = poses[step.parentLink];
     const double* o = step.origin;
-    LanePose<N> c;
+    LanePose<N> c;  // in registers; stored once at the end
     // child = parent * origin
-    for (int r = 0; r < 3; ++r) {
-      for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < N; ++l) c.v[r * 3 + k][l] = p.v[r * 3][l] * o[k] + p.v[r * 3 + 1][l] * o[3 + k] + p.v[r * 3 + 2][l] * o[6 + k];
-      for (int l = 0; l < N; ++l) c.v[9 + r][l] = p.v[r * 3][l] * o[9] + p.v[r * 3 + 1][l] * o[10] + p.v[r * 3 + 2][l] * o[11] + p.v[9 + r][l];
+    if (step.permutes) {
+      for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < N; ++l) c.v[r * 3 + k][l] = step.sign[k] * p.v[r * 3 + step.column[k]][l];
+    } else {
+      for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < N; ++l) c.v[r * 3 + k][l] = p.v[r * 3][l] * o[k] + p.v[r * 3 + 1][l] * o[3 + k] + p.v[r * 3 + 2][l] * o[6 + k];
     }
-    double value[N];
-    for (int l = 0; l < N; ++l) value[l] = values[step.joint * N + l];
+    if (step.translates) {
+      for (int r = 0; r < 3; ++r)
+        for (int l = 0; l < N; ++l) c.v[9 + r][l] = p.v[r * 3][l] * o[9] + p.v[r * 3 + 1][l] * o[10] + p.v[r * 3 + 2][l] * o[11] + p.v[9 + r][l];
+    } else {
+      for (int r = 0; r < 3; ++r)
+        for (int l = 0; l < N; ++l) c.v[9 + r][l] = p.v[9 + r][l];
+    }
     if (step.motion == 1) {
       // child.linear() *= rotation(axis, value), as Eigen's AngleAxis builds it.
-      double s[N], co[N];
-      sinCosLanes<N>(value, s, co);
+      const double* s = sines + step.joint * N;
+      const double* co = cosines + step.joint * N;
       if (step.axisZ != 0) {
-        for (int l = 0; l < N; ++l) s[l] *= step.axisZ;
+        const double sign = step.axisZ;
         for (int r = 0; r < 3; ++r)
           for (int l = 0; l < N; ++l) {
             const double a = c.v[r * 3][l], b = c.v[r * 3 + 1][l];
-            c.v[r * 3][l] = a * co[l] + b * s[l];
-            c.v[r * 3 + 1][l] = b * co[l] - a * s[l];
+            c.v[r * 3][l] = a * co[l] + b * (sign * s[l]);
+            c.v[r * 3 + 1][l] = b * co[l] - a * (sign * s[l]);
           }
       } else {
         const double ax = step.axis[0], ay = step.axis[1], az = step.axis[2];
@@ -120,6 +131,7 @@ template <int N>
         }
       }
     } else if (step.motion == 2) {
+      const double* value = values + step.joint * N;
       for (int r = 0; r < 3; ++r)
         for (int l = 0; l < N; ++l)
           c.v[9 + r][l] += value[l] * (c.v[r * 3][l] * step.axis[0] + c.v[r * 3 + 1][l] * step.axis[1] + c.v[r * 3 + 2][l] * step.axis[2]);
@@ -128,11 +140,11 @@ template <int N>
   }
 }
 
-void batchBaseline(const Plan& plan, const double* q, double* poses, double* values) {
-  walk<BatchedForwardKinematics::kLanes>(plan, q, poses, values);
+void batchBaseline(const Plan& plan, const double* q, double* poses, double* scratch) {
+  walk<BatchedForwardKinematics::kLanes>(plan, q, poses, scratch);
 }
-[[gnu::target("avx2")]] void batchAvx2(const Plan& plan, const double* q, double* poses, double* values) {
-  walk<BatchedForwardKinematics::kLanes>(plan, q, poses, values);
+[[gnu::target("avx2")]] void batchAvx2(const Plan& plan, const double* q, double* poses, double* scratch) {
+  walk<BatchedForwardKinematics::kLanes>(plan, q, poses, scratch);
 }
 
 bool detectAvx2() {
@@ -155,6 +167,8 @@ BatchedForwardKinematics::BatchedForwardKinematics(const RobotModel& model, cons
   toPlain(base, plan_.base);
   for (const auto& joint : model.joints())
     plan_.values.push_back({joint.activeIndex, joint.mimicSource, joint.mimicMultiplier, joint.mimicOffset});
+  parentLink_.assign(static_cast<std::size_t>(linkCount_), -1);
+  for (const auto& joint : model.joints()) parentLink_[static_cast<std::size_t>(joint.childLink)] = joint.parentLink;
   for (int j : model.jointOrder()) {
     const Joint& joint = model.joints()[static_cast<std::size_t>(j)];
     Step step;
@@ -165,23 +179,58 @@ BatchedForwardKinematics::BatchedForwardKinematics(const RobotModel& model, cons
     toPlain(joint.origin, step.origin);
     for (int a = 0; a < 3; ++a) step.axis[a] = joint.axis[a];
     if (joint.axis.x() == 0.0 && joint.axis.y() == 0.0 && std::abs(joint.axis.z()) == 1.0) step.axisZ = joint.axis.z() > 0 ? 1 : -1;
+    // A rotation whose entries are 0 or +-1 up to rounding (cos 90 deg is 6e-17 in doubles).
+    step.permutes = true;
+    for (int k = 0; k < 3; ++k) {
+      int ones = 0;
+      for (int r = 0; r < 3; ++r) {
+        const double e = step.origin[r * 3 + k];
+        if (std::abs(std::abs(e) - 1.0) <= 1e-15) {
+          ++ones;
+          step.column[k] = r;
+          step.sign[k] = e > 0.0 ? 1.0 : -1.0;
+        } else if (std::abs(e) > 1e-15) {
+          step.permutes = false;
+        }
+      }
+      step.permutes = step.permutes && ones == 1;
+    }
+    step.translates = step.origin[9] != 0.0 || step.origin[10] != 0.0 || step.origin[11] != 0.0;
     plan_.steps.push_back(step);
   }
 }
 
 void BatchedForwardKinematics::computeBatch(const double* jointsByLane, double* poses) const {
-  thread_local std::vector<double> values;
-  values.resize(static_cast<std::size_t>(plan_.jointCount) * kLanes);
+  thread_local std::vector<double> scratch;
+  scratch.resize(3 * static_cast<std::size_t>(plan_.jointCount) * kLanes);
   if (usesAvx2())
-    batchAvx2(plan_, jointsByLane, poses, values.data());
+    batchAvx2(plan_, jointsByLane, poses, scratch.data());
   else
-    batchBaseline(plan_, jointsByLane, poses, values.data());
+    batchBaseline(plan_, jointsByLane, poses, scratch.data());
+}
+
+void BatchedForwardKinematics::addWithAncestors(LinkSet& set, int link) const {
+  for (int l = link; l >= 0; l = parentLink_[static_cast<std::size_t>(l)]) set[static_cast<std::size_t>(l) >> 6] |= std::uint64_t{1} << (l & 63);
+}
+
+void BatchedForwardKinematics::computeSome(const double* q, double* poses, const LinkSet& links, int frame) const {
+  thread_local std::vector<double> scratch;
+  scratch.resize(3 * static_cast<std::size_t>(plan_.jointCount));
+  walk<1>(plan_, q, poses, scratch.data(), links.data(), frame);
+}
+
+int BatchedForwardKinematics::commonAncestor(int a, int b) const {
+  std::vector<int> chain;
+  for (int l = a; l >= 0; l = parentLink_[static_cast<std::size_t>(l)]) chain.push_back(l);
+  for (int l = b; l >= 0; l = parentLink_[static_cast<std::size_t>(l)])
+    if (std::find(chain.begin(), chain.end(), l) != chain.end()) return l;
+  return -1;
 }
 
 void BatchedForwardKinematics::computeOne(const double* q, double* poses) const {
-  thread_local std::vector<double> values;
-  values.resize(static_cast<std::size_t>(plan_.jointCount));
-  walk<1>(plan_, q, poses, values.data());
+  thread_local std::vector<double> scratch;
+  scratch.resize(3 * static_cast<std::size_t>(plan_.jointCount));
+  walk<1>(plan_, q, poses, scratch.data());
 }
 
 }  // namespace pmdplan

@@ -1,6 +1,6 @@
 #include "pmdplan/collision/collision_checking.hpp"
 
-#include "pmdplan/collision/batched_segment_checker.hpp"
+#include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
 
 namespace pmdplan {
@@ -9,7 +9,7 @@ CollisionChecking::CollisionChecking(const Task& task, CheckerKind kind, double 
     : kind_(kind), tolerance_(toleranceMetres), exact_(std::make_unique<ExactCollisionChecker>(task)) {
   if (kind == CheckerKind::Fast) {
     auto fast = std::make_unique<FastCollisionChecker>(task, *exact_);
-    motions_ = std::make_unique<BatchedSegmentChecker>(*fast, *task.robot, toleranceMetres);
+    motions_ = std::make_unique<FastSegmentChecker>(*fast, *task.robot, toleranceMetres);
     fastStates_ = std::move(fast);
     states_ = fastStates_.get();
   } else {

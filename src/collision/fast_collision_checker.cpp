@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <tuple>
+
+#include "pmdplan/collision/convex_distance.hpp"
 
 namespace pmdplan {
 namespace {
@@ -21,351 +25,10 @@ std::vector<char> movingLinks(const RobotModel& model) {
   return moving;
 }
 
-double sphereGap(double ax, double ay, double az, double ar, double bx, double by, double bz, double br) {
-  const double dx = ax - bx, dy = ay - by, dz = az - bz;
-  return std::sqrt(dx * dx + dy * dy + dz * dz) - ar - br;
+double sphereSphereGap(const double* a, double ra, const double* b, double rb) {
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz) - ra - rb;
 }
-
-/// Smallest gap between spheres [a, a + na) and [b, b + nb) of the world arrays, each sphere of a
-/// first screened against the bounding sphere of b's group.
-double smallestPairwiseGap(const double* x, const double* y, const double* z, const double* r, int a, int na, int b, int nb,
-                           const double* boundB) {
-  double smallest = kInfinity;
-  for (int i = a; i < a + na; ++i) {
-    const double toBound = sphereGap(x[i], y[i], z[i], r[i], boundB[0], boundB[1], boundB[2], boundB[3]);
-    if (toBound > 0.0) {
-      smallest = std::min(smallest, toBound);
-      continue;
-    }
-    for (int j = b; j < b + nb; ++j) smallest = std::min(smallest, sphereGap(x[i], y[i], z[i], r[i], x[j], y[j], z[j], r[j]));
-    if (smallest <= 0.0) return smallest;
-  }
-  return smallest;
-}
-
-}  // namespace
-
-FastCollisionChecker::FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, const FastCheckerParameters& parameters)
-    : exact_(exact),
-      spheres_(*task.robot, parameters.spheres),
-      environment_(task.obstacles),
-      kinematics_(*task.robot, task.base),
-      moving_(movingLinks(*task.robot)) {
-  if (&exact.model() != task.robot.get()) throw std::invalid_argument("the exact checker belongs to another task");
-  const auto& links = spheres_.links();
-  const std::size_t n = links.size();
-  for (std::size_t l = 0; l < n; ++l) {
-    sphereOffset_.push_back(static_cast<int>(worldX_.size()));
-    groupOffset_.push_back(static_cast<int>(groupX_.size()));
-    worldX_.resize(worldX_.size() + static_cast<std::size_t>(links[l].sphereCount()));
-    groupX_.resize(groupX_.size() + static_cast<std::size_t>(links[l].groupCount()));
-    if (!links[l].empty() && moving_[l]) geometricLinks_.push_back(static_cast<int>(l));
-  }
-  worldY_ = worldZ_ = worldX_;
-  worldR_.clear();
-  for (const auto& link : links) worldR_.insert(worldR_.end(), link.radius.begin(), link.radius.end());
-  groupY_ = groupZ_ = groupR_ = groupX_;
-  worldBoxes_.resize(groupX_.size());
-  worldCapsules_.resize(groupX_.size());
-  groupPlaced_.assign(groupX_.size(), 0);
-  boxPlaced_.assign(groupX_.size(), 0);
-  linkPoses_.assign(n * kValues, 0.0);
-  for (std::size_t l = 0; l < n; ++l)
-    for (int g = 0; g < links[l].groupCount(); ++g)
-      groupR_[static_cast<std::size_t>(groupOffset_[l] + g)] = links[l].groupBounds[static_cast<std::size_t>(g)].radius;
-  boundX_.assign(n, 0.0), boundY_ = boundZ_ = boundX_;
-  placed_.assign(n, 0);
-  poseScratch_.resize(kinematics_.batchPoseSize());
-
-  for (std::size_t l = 0; l < n; ++l)
-    if (!links[l].empty()) boundLinks_.push_back(static_cast<int>(l));
-  for (int l : geometricLinks_) movingBoundR_.push_back(links[static_cast<std::size_t>(l)].bound.radius);
-  movingBoundX_.assign(geometricLinks_.size(), 0.0);
-  movingBoundY_ = movingBoundZ_ = movingBoundX_;
-  obstacleGaps_.assign(geometricLinks_.size() * environment_.size(), 0.0);
-
-  // Pairs no joint moves are decided once, by the exact checker itself (their poses never change).
-  exact.kinematics().linkPoses(Configuration::Zero(task.robot->dof()), exactPoses_);
-  for (const auto& [a, b] : exact.selfPairs()) {
-    if (moving_[static_cast<std::size_t>(a)] || moving_[static_cast<std::size_t>(b)]) {
-      movingSelfPairs_.emplace_back(a, b);
-      pairIsArm_.push_back(exact.isArmLink(a) && exact.isArmLink(b));
-      pairA_.push_back(a);
-      pairB_.push_back(b);
-      pairRadiusSum_.push_back(links[static_cast<std::size_t>(a)].bound.radius + links[static_cast<std::size_t>(b)].bound.radius);
-      pairShare_.push_back(1.0 / (moving_[static_cast<std::size_t>(a)] + moving_[static_cast<std::size_t>(b)]));
-    } else if (exact.linkPairCollides(exactPoses_, a, b)) {
-      staticSelfCollisions_.emplace_back(a, b);
-      if (exact.isArmLink(a) && exact.isArmLink(b)) staticArmSelfCollisions_.emplace_back(a, b);
-    }
-  }
-  pairGaps_.assign(movingSelfPairs_.size(), 0.0);
-  pairDx_ = pairDy_ = pairDz_ = pairGaps_;
-  linkShare_.assign(geometricLinks_.size(), 1.0);
-  computeMotionWeights(*task.robot);
-  for (std::size_t l = 0; l < n; ++l)
-    if (!moving_[l] && !links[l].empty())
-      for (std::size_t o = 0; o < environment_.size(); ++o)
-        if (exact.linkObstacleCollides(exactPoses_, static_cast<int>(l), o)) staticEnvironmentCollisions_.emplace_back(static_cast<int>(l), o);
-}
-
-void FastCollisionChecker::placeLink(int link, const double* poses, int stride, int lane) {
-  const auto& spheres = spheres_.links()[static_cast<std::size_t>(link)];
-  double* m = linkPoses_.data() + link * kValues;
-  for (int i = 0; i < kValues; ++i) m[i] = poses[(link * kValues + i) * stride + lane];
-  const int groupOffset = groupOffset_[static_cast<std::size_t>(link)];
-  for (int g = 0; g < spheres.groupCount(); ++g) {
-    const double* c = spheres.groupBounds[static_cast<std::size_t>(g)].centre;
-    const auto k = static_cast<std::size_t>(groupOffset + g);
-    groupX_[k] = m[0] * c[0] + m[1] * c[1] + m[2] * c[2] + m[9];
-    groupY_[k] = m[3] * c[0] + m[4] * c[1] + m[5] * c[2] + m[10];
-    groupZ_[k] = m[6] * c[0] + m[7] * c[1] + m[8] * c[2] + m[11];
-    groupPlaced_[k] = 0;
-    const GroupKind kind = spheres.groupKind[static_cast<std::size_t>(g)];
-    if (kind == GroupKind::Capsule) {
-      const Capsule& local = spheres.groupCapsules[static_cast<std::size_t>(g)];
-      Capsule& world = worldCapsules_[k];
-      world.radius = local.radius;
-      for (int r = 0; r < 3; ++r) {
-        world.a[r] = m[r * 3] * local.a[0] + m[r * 3 + 1] * local.a[1] + m[r * 3 + 2] * local.a[2] + m[9 + r];
-        world.b[r] = m[r * 3] * local.b[0] + m[r * 3 + 1] * local.b[1] + m[r * 3 + 2] * local.b[2] + m[9 + r];
-      }
-    }
-    boxPlaced_[k] = 0;  // boxes are turned into the world on first use (placedBox)
-  }
-  placed_[static_cast<std::size_t>(link)] = 1;
-}
-
-const SolidPrimitive& FastCollisionChecker::placedBox(int link, int group) {
-  const auto k = static_cast<std::size_t>(groupOffset_[static_cast<std::size_t>(link)] + group);
-  SolidPrimitive& world = worldBoxes_[k];
-  if (boxPlaced_[k]) return world;
-  const SolidPrimitive& local = spheres_.links()[static_cast<std::size_t>(link)].groupBoxes[static_cast<std::size_t>(group)];
-  const double* m = linkPoses_.data() + link * kValues;
-  world = local;
-  world.centre[0] = groupX_[k], world.centre[1] = groupY_[k], world.centre[2] = groupZ_[k];
-  for (int r = 0; r < 3; ++r)
-    for (int col = 0; col < 3; ++col)
-      world.rotation[r * 3 + col] = m[r * 3] * local.rotation[col] + m[r * 3 + 1] * local.rotation[3 + col] + m[r * 3 + 2] * local.rotation[6 + col];
-  boxPlaced_[k] = 1;
-  return world;
-}
-
-int FastCollisionChecker::placeGroup(int link, int group) {
-  const auto& spheres = spheres_.links()[static_cast<std::size_t>(link)];
-  const int begin = spheres.groupBegin[static_cast<std::size_t>(group)];
-  const int offset = sphereOffset_[static_cast<std::size_t>(link)] + begin;
-  const auto k = static_cast<std::size_t>(groupOffset_[static_cast<std::size_t>(link)] + group);
-  if (groupPlaced_[k]) return offset;
-  const double* m = linkPoses_.data() + link * kValues;
-  const int count = spheres.groupBegin[static_cast<std::size_t>(group) + 1] - begin;
-  const double *lx = spheres.x.data() + begin, *ly = spheres.y.data() + begin, *lz = spheres.z.data() + begin;
-  double* __restrict wx = worldX_.data() + offset;
-  double* __restrict wy = worldY_.data() + offset;
-  double* __restrict wz = worldZ_.data() + offset;
-  for (int i = 0; i < count; ++i) {
-    wx[i] = m[0] * lx[i] + m[1] * ly[i] + m[2] * lz[i] + m[9];
-    wy[i] = m[3] * lx[i] + m[4] * ly[i] + m[5] * lz[i] + m[10];
-    wz[i] = m[6] * lx[i] + m[7] * ly[i] + m[8] * lz[i] + m[11];
-  }
-  groupPlaced_[k] = 1;
-  return offset;
-}
-
-// The sphere stage of one configuration (lane `lane` of poses laid out with `stride` lanes).
-// onFlag(isSelf, a, b) is called for every flagged pair and returns true to stop. Returns the safe
-// displacement (see SphereStageVerdict) when nothing was flagged, else 0 (-1 when stopped).
-template <class OnFlag>
-double FastCollisionChecker::runStage(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag) {
-  const auto& links = spheres_.links();
-  std::fill(placed_.begin(), placed_.end(), 0);
-  for (int l : boundLinks_) {
-    const double* c = links[static_cast<std::size_t>(l)].bound.centre;
-    double m[kValues];
-    for (int i = 0; i < kValues; ++i) m[i] = poses[(l * kValues + i) * stride + lane];
-    boundX_[static_cast<std::size_t>(l)] = m[0] * c[0] + m[1] * c[1] + m[2] * c[2] + m[9];
-    boundY_[static_cast<std::size_t>(l)] = m[3] * c[0] + m[4] * c[1] + m[5] * c[2] + m[10];
-    boundZ_[static_cast<std::size_t>(l)] = m[6] * c[0] + m[7] * c[1] + m[8] * c[2] + m[11];
-  }
-  for (std::size_t i = 0; i < geometricLinks_.size(); ++i) {
-    const auto l = static_cast<std::size_t>(geometricLinks_[i]);
-    movingBoundX_[i] = boundX_[l], movingBoundY_[i] = boundY_[l], movingBoundZ_[i] = boundZ_[l];
-  }
-  double safe = kInfinity;
-  bool flagged = false;
-
-  // Self, first the link bounds of every pair in one branch-free pass (it vectorises), then the
-  // pairs whose bounds touch, primitive by primitive.
-  const std::size_t pairCount = movingSelfPairs_.size();
-  {
-    const int* pa = pairA_.data();
-    const int* pb = pairB_.data();
-    const double *bx = boundX_.data(), *by = boundY_.data(), *bz = boundZ_.data();
-    double* __restrict dx = pairDx_.data();
-    double* __restrict dy = pairDy_.data();
-    double* __restrict dz = pairDz_.data();
-    for (std::size_t p = 0; p < pairCount; ++p)  // gathers
-      dx[p] = bx[pa[p]] - bx[pb[p]], dy[p] = by[pa[p]] - by[pb[p]], dz[p] = bz[pa[p]] - bz[pb[p]];
-    const double* sum = pairRadiusSum_.data();
-    const double* share = pairShare_.data();
-    double* __restrict gaps = pairGaps_.data();
-    for (std::size_t p = 0; p < pairCount; ++p) gaps[p] = std::sqrt(dx[p] * dx[p] + dy[p] * dy[p] + dz[p] * dz[p]) - sum[p];
-    if (!armOnly) {
-      // Four running minima keep the loop free of one long dependency chain.
-      double partial[4] = {kInfinity, kInfinity, kInfinity, kInfinity};
-      std::size_t p = 0;
-      for (; p + 4 <= pairCount; p += 4)
-        for (int k = 0; k < 4; ++k) {
-          const double g = gaps[p + k];
-          partial[k] = std::min(partial[k], g > 0.0 ? g * share[p + k] : kInfinity);
-        }
-      for (; p < pairCount; ++p) partial[0] = std::min(partial[0], gaps[p] > 0.0 ? gaps[p] * share[p] : kInfinity);
-      safe = std::min(std::min(partial[0], partial[1]), std::min(partial[2], partial[3]));
-    }
-  }
-  for (std::size_t p = 0; p < pairCount; ++p) {
-    const double linkGap = pairGaps_[p];
-    if (linkGap > 0.0) {
-      if (armOnly && pairIsArm_[p]) safe = std::min(safe, linkGap * pairShare_[p]);
-      continue;
-    }
-    if (armOnly && !pairIsArm_[p]) continue;
-    const auto [a, b] = movingSelfPairs_[p];
-    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
-    if (!placed_[ua]) placeLink(a, poses, stride, lane);
-    if (!placed_[ub]) placeLink(b, poses, stride, lane);
-    const auto& la = links[ua];
-    const auto& lb = links[ub];
-    double pairGap = kInfinity;
-    for (int ga = 0; ga < la.groupCount() && pairGap > 0.0; ++ga) {
-      const auto ka = static_cast<std::size_t>(groupOffset_[ua] + ga);
-      const double boundA[4] = {groupX_[ka], groupY_[ka], groupZ_[ka], groupR_[ka]};
-      const double toLink = sphereGap(boundA[0], boundA[1], boundA[2], boundA[3], boundX_[ub], boundY_[ub], boundZ_[ub], lb.bound.radius);
-      if (toLink > 0.0) {
-        pairGap = std::min(pairGap, toLink);
-        continue;
-      }
-      for (int gb = 0; gb < lb.groupCount() && pairGap > 0.0; ++gb) {
-        const auto kb = static_cast<std::size_t>(groupOffset_[ub] + gb);
-        const double boundB[4] = {groupX_[kb], groupY_[kb], groupZ_[kb], groupR_[kb]};
-        const double groupGap = sphereGap(boundA[0], boundA[1], boundA[2], boundA[3], boundB[0], boundB[1], boundB[2], boundB[3]);
-        if (groupGap > 0.0) {
-          pairGap = std::min(pairGap, groupGap);
-          continue;
-        }
-        const double gap = groupPairGap(a, ga, b, gb, boundB);
-        pairGap = std::min(pairGap, gap);
-      }
-    }
-    if (pairGap > 0.0) {
-      safe = std::min(safe, pairGap * pairShare_[p]);
-      continue;
-    }
-    flagged = true;
-    if (onFlag(true, a, b)) return -1.0;
-  }
-  if (armOnly) return flagged ? 0.0 : safe;
-
-  // Environment: every moving link against every obstacle (static links were decided once), the
-  // link bounds first in one pass per obstacle.
-  const std::size_t linkCount = geometricLinks_.size();
-  for (std::size_t o = 0; o < environment_.size(); ++o)
-    sphereGaps(environment_.primitive(o), movingBoundX_.data(), movingBoundY_.data(), movingBoundZ_.data(), movingBoundR_.data(),
-                      static_cast<int>(linkCount), obstacleGaps_.data() + o * linkCount);
-  for (std::size_t o = 0; o < environment_.size(); ++o) {
-    const double* gaps = obstacleGaps_.data() + o * linkCount;
-    double partial = kInfinity;
-    for (std::size_t i = 0; i < linkCount; ++i) partial = std::min(partial, gaps[i] > 0.0 ? gaps[i] * linkShare_[i] : kInfinity);
-    safe = std::min(safe, partial);
-  }
-  for (std::size_t i = 0; i < linkCount; ++i) {
-    const int l = geometricLinks_[i];
-    const auto ul = static_cast<std::size_t>(l);
-    const auto& link = links[ul];
-    for (std::size_t o = 0; o < environment_.size(); ++o) {
-      if (obstacleGaps_[o * linkCount + i] > 0.0) continue;  // counted in `safe` above
-      if (!placed_[ul]) placeLink(l, poses, stride, lane);
-      double pairGap = kInfinity;
-      for (int g = 0; g < link.groupCount() && pairGap > 0.0; ++g) {
-        const auto k = static_cast<std::size_t>(groupOffset_[ul] + g);
-        const double groupGap = environment_.gap(o, groupX_[k], groupY_[k], groupZ_[k], groupR_[k]);
-        if (groupGap > 0.0) {
-          pairGap = std::min(pairGap, groupGap);
-          continue;
-        }
-        const int count = link.groupBegin[static_cast<std::size_t>(g) + 1] - link.groupBegin[static_cast<std::size_t>(g)];
-        const SolidPrimitive& obstacle = environment_.primitive(o);
-        const GroupKind kind = link.groupKind[static_cast<std::size_t>(g)];
-        double gap = -1.0;
-        if (kind == GroupKind::Box) {
-          // A box: exact against boxes and spheres; against a cylinder the better of two lower
-          // bounds (the cylinder's box, then the box's spheres).
-          if (obstacle.kind == SolidPrimitive::Kind::Sphere)
-            gap = sphereGap(placedBox(l, g), obstacle.centre[0], obstacle.centre[1], obstacle.centre[2], obstacle.size[0]);
-          else
-            gap = boxGapLowerBound(placedBox(l, g), environment_.boundingBox(o));
-        } else if (kind == GroupKind::Capsule && obstacle.kind == SolidPrimitive::Kind::Sphere) {
-          const Capsule& c = worldCapsules_[k];
-          gap = segmentDistance(c.a, c.b, obstacle.centre, obstacle.centre) - c.radius - obstacle.size[0];
-        } else if (kind == GroupKind::Capsule) {
-          // The box's (or the cylinder's box's) face normals first; the covering spheres if they
-          // do not separate.
-          gap = capsuleBoxGapLowerBound(worldCapsules_[k], environment_.boundingBox(o));
-        }
-        if (!(gap > 0.0) && (kind != GroupKind::Box || obstacle.kind == SolidPrimitive::Kind::Cylinder) &&
-            !(kind == GroupKind::Capsule && obstacle.kind == SolidPrimitive::Kind::Sphere)) {
-          const int s = placeGroup(l, g);
-          gap = environment_.smallestGap(o, worldX_.data() + s, worldY_.data() + s, worldZ_.data() + s, worldR_.data() + s, count);
-        }
-        pairGap = std::min(pairGap, gap);
-      }
-      if (pairGap > 0.0) {
-        safe = std::min(safe, pairGap * linkShare_[i]);
-        continue;
-      }
-      flagged = true;
-      if (onFlag(false, l, static_cast<int>(o))) return -1.0;
-    }
-  }
-  return flagged ? 0.0 : safe;
-}
-
-// The gap between two groups of two links (both placed): exact for capsule-capsule, box-box by
-// separating axes, a capsule's or sphere group's covering spheres against a box, else sphere pairs.
-double FastCollisionChecker::groupPairGap(int a, int ga, int b, int gb, const double* boundB) {
-  const auto& la = spheres_.links()[static_cast<std::size_t>(a)];
-  const auto& lb = spheres_.links()[static_cast<std::size_t>(b)];
-  const auto ka = static_cast<std::size_t>(groupOffset_[static_cast<std::size_t>(a)] + ga);
-  const auto kb = static_cast<std::size_t>(groupOffset_[static_cast<std::size_t>(b)] + gb);
-  const GroupKind kindA = la.groupKind[static_cast<std::size_t>(ga)], kindB = lb.groupKind[static_cast<std::size_t>(gb)];
-  if (kindA == GroupKind::Capsule && kindB == GroupKind::Capsule) {
-    const Capsule &ca = worldCapsules_[ka], &cb = worldCapsules_[kb];
-    return segmentDistance(ca.a, ca.b, cb.a, cb.b) - ca.radius - cb.radius;
-  }
-  if (kindA == GroupKind::Box && kindB == GroupKind::Box) return boxGapLowerBound(placedBox(a, ga), placedBox(b, gb));
-  const int na = la.groupBegin[static_cast<std::size_t>(ga) + 1] - la.groupBegin[static_cast<std::size_t>(ga)];
-  const int nb = lb.groupBegin[static_cast<std::size_t>(gb) + 1] - lb.groupBegin[static_cast<std::size_t>(gb)];
-  if (kindA == GroupKind::Box && kindB == GroupKind::Capsule) {
-    const double faces = capsuleBoxGapLowerBound(worldCapsules_[kb], placedBox(a, ga));
-    if (faces > 0.0) return faces;
-  }
-  if (kindB == GroupKind::Box && kindA == GroupKind::Capsule) {
-    const double faces = capsuleBoxGapLowerBound(worldCapsules_[ka], placedBox(b, gb));
-    if (faces > 0.0) return faces;
-  }
-  if (kindA == GroupKind::Box) {
-    const int sb = placeGroup(b, gb);
-    return smallestSphereGap(placedBox(a, ga), worldX_.data() + sb, worldY_.data() + sb, worldZ_.data() + sb, worldR_.data() + sb, nb);
-  }
-  if (kindB == GroupKind::Box) {
-    const int sa = placeGroup(a, ga);
-    return smallestSphereGap(placedBox(b, gb), worldX_.data() + sa, worldY_.data() + sa, worldZ_.data() + sa, worldR_.data() + sa, na);
-  }
-  const int sa = placeGroup(a, ga), sb = placeGroup(b, gb);
-  return smallestPairwiseGap(worldX_.data(), worldY_.data(), worldZ_.data(), worldR_.data(), sa, na, sb, nb, boundB);
-}
-
-namespace {
 
 /// Joints from the root to `link` (indices into joints()), root first.
 std::vector<int> jointChain(const RobotModel& model, int link) {
@@ -379,6 +42,260 @@ std::vector<int> jointChain(const RobotModel& model, int link) {
 }
 
 }  // namespace
+
+FastCollisionChecker::FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, double band)
+    : exact_(exact),
+      band_(band),
+      links_(linkParts(*task.robot)),
+      obstacles_(obstacleParts(task.obstacles)),
+      kinematics_(*task.robot, task.base),
+      moving_(movingLinks(*task.robot)) {
+  if (&exact.model() != task.robot.get()) throw std::invalid_argument("the exact checker belongs to another task");
+  if (!(band > 0.0)) throw std::invalid_argument("the fast checker's band must be positive");
+  const std::size_t n = links_.size();
+  for (std::size_t l = 0; l < n; ++l) {
+    partOffset_.push_back(static_cast<int>(worldParts_.size()));
+    worldParts_.resize(worldParts_.size() + links_[l].parts.size());
+    if (links_[l].empty()) continue;
+    boundLinks_.push_back(static_cast<int>(l));
+    if (moving_[l]) {
+      geometricLinks_.push_back(static_cast<int>(l));
+      geometricBoundR_.push_back(links_[l].boundRadius);
+    }
+  }
+  placed_.assign(n, 0);
+  boundPlaced_.assign(n, 0);
+  partPlaced_.assign(worldParts_.size(), 0);
+  linkPoses_.assign(n * kValues, 0.0);
+  boundX_.assign(n, 0.0), boundY_ = boundZ_ = boundX_;
+  geometricX_.assign(geometricLinks_.size(), 0.0), geometricY_ = geometricZ_ = geometricX_;
+  obstacleGaps_.assign(geometricLinks_.size() * obstacles_.size(), 0.0);
+  poseScratch_.resize(kinematics_.batchPoseSize());
+
+  // Pairs no joint moves are decided once, by the exact checker itself (their poses never change).
+  exact.kinematics().linkPoses(Configuration::Zero(task.robot->dof()), exactPoses_);
+  for (const auto& [a, b] : exact.selfPairs()) {
+    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+    if (moving_[ua] || moving_[ub]) {
+      selfPairs_.emplace_back(a, b);
+      pairIsArm_.push_back(exact.isArmLink(a) && exact.isArmLink(b));
+      pairA_.push_back(a);
+      pairB_.push_back(b);
+      pairRadiusSum_.push_back(links_[ua].boundRadius + links_[ub].boundRadius);
+      pairShare_.push_back(1.0 / (moving_[ua] + moving_[ub]));
+    } else if (exact.linkPairCollides(exactPoses_, a, b)) {
+      staticSelfCollisions_.emplace_back(a, b);
+      if (exact.isArmLink(a) && exact.isArmLink(b)) staticArmSelfCollisions_.emplace_back(a, b);
+    }
+  }
+  pairGaps_.assign(selfPairs_.size(), 0.0);
+  pairDx_ = pairDy_ = pairDz_ = pairGaps_;
+  linkShare_.assign(geometricLinks_.size(), 1.0);
+  computeMotionWeights(*task.robot);
+  for (std::size_t p = 0; p < pairCount(); ++p) {
+    auto links = kinematics_.emptyLinkSet();
+    if (p < selfPairs_.size()) {
+      const auto [a, b] = selfPairs_[p];
+      kinematics_.addWithAncestors(links, a);
+      kinematics_.addWithAncestors(links, b);
+      const int frame = kinematics_.commonAncestor(a, b);
+      auto above = kinematics_.emptyLinkSet(), relative = links;
+      kinematics_.addWithAncestors(above, frame);
+      for (std::size_t w = 0; w < relative.size(); ++w) relative[w] &= ~above[w];
+      pairFrame_.push_back(frame);
+      pairRelativeLinks_.push_back(std::move(relative));
+    } else {
+      kinematics_.addWithAncestors(links, geometricLinks_[(p - selfPairs_.size()) % geometricLinks_.size()]);
+    }
+    pairLinks_.push_back(std::move(links));
+  }
+  posedLinks_ = kinematics_.emptyLinkSet();
+  for (std::size_t l = 0; l < n; ++l)
+    if (!moving_[l] && !links_[l].empty())
+      for (std::size_t o = 0; o < obstacles_.size(); ++o)
+        if (exact.linkObstacleCollides(exactPoses_, static_cast<int>(l), o)) staticEnvironmentCollisions_.emplace_back(static_cast<int>(l), o);
+}
+
+const ConvexPart* FastCollisionChecker::placedBounds(int link) {
+  const auto l = static_cast<std::size_t>(link);
+  ConvexPart* world = worldParts_.data() + partOffset_[l];
+  if (placed_[l]) return world;
+  double* pose = linkPoses_.data() + l * kValues;
+  for (int i = 0; i < kValues; ++i) pose[i] = lanePoses_[(link * kValues + i) * laneStride_ + lane_];
+  const auto& local = links_[l].parts;
+  for (std::size_t p = 0; p < local.size(); ++p) {
+    const double* c = local[p].boundCentre;
+    double* w = world[p].boundCentre;
+    for (int r = 0; r < 3; ++r) w[r] = pose[r * 3] * c[0] + pose[r * 3 + 1] * c[1] + pose[r * 3 + 2] * c[2] + pose[9 + r];
+    world[p].boundRadius = local[p].boundRadius;
+    partPlaced_[static_cast<std::size_t>(partOffset_[l]) + p] = 0;
+  }
+  placed_[l] = 1;
+  return world;
+}
+
+const ConvexPart& FastCollisionChecker::placedPart(int link, std::size_t index) {
+  const auto l = static_cast<std::size_t>(link);
+  const std::size_t k = static_cast<std::size_t>(partOffset_[l]) + index;
+  if (!partPlaced_[k]) {
+    placePart(links_[l].parts[index], linkPoses_.data() + l * kValues, worldParts_[k]);
+    partPlaced_[k] = 1;
+  }
+  return worldParts_[k];
+}
+
+// Part against part; a part first against the other link's bound, each part pair first by its
+// bounding spheres. Overlapping as soon as one part pair overlaps; Uncertain if one is too close
+// to call and none overlaps; else Apart with the smallest gap.
+FastCollisionChecker::Outcome FastCollisionChecker::linkPairContact(int a, int b, double& gap) {
+  const ConvexPart* partsA = placedBounds(a);
+  const ConvexPart* partsB = placedBounds(b);
+  const std::size_t na = links_[static_cast<std::size_t>(a)].parts.size(), nb = links_[static_cast<std::size_t>(b)].parts.size();
+  const double boundB[3] = {boundX_[static_cast<std::size_t>(b)], boundY_[static_cast<std::size_t>(b)], boundZ_[static_cast<std::size_t>(b)]};
+  const double boundRadiusB = links_[static_cast<std::size_t>(b)].boundRadius;
+  bool uncertain = false;
+  gap = kInfinity;
+  for (std::size_t i = 0; i < na; ++i) {
+    const ConvexPart& pa = partsA[i];
+    const double toLink = sphereSphereGap(pa.boundCentre, pa.boundRadius, boundB, boundRadiusB);
+    if (toLink > band_) {
+      gap = std::min(gap, toLink);
+      continue;
+    }
+    for (std::size_t j = 0; j < nb; ++j) {
+      const ConvexPart& pb = partsB[j];
+      const double bounds = sphereSphereGap(pa.boundCentre, pa.boundRadius, pb.boundCentre, pb.boundRadius);
+      if (bounds > band_) {
+        gap = std::min(gap, bounds);
+        continue;
+      }
+      const PartContact contact = partContact(placedPart(a, i), placedPart(b, j), band_);
+      if (contact.contact == Contact::Overlapping) return Outcome::Overlapping;
+      if (contact.contact == Contact::Uncertain)
+        uncertain = true;
+      else
+        gap = std::min(gap, contact.gap);
+    }
+  }
+  return uncertain ? Outcome::Uncertain : Outcome::Apart;
+}
+
+FastCollisionChecker::Outcome FastCollisionChecker::linkObstacleContact(int link, std::size_t o, double& gap) {
+  const ConvexPart* parts = placedBounds(link);
+  const std::size_t count = links_[static_cast<std::size_t>(link)].parts.size();
+  const ObstaclePart& obstacle = obstacles_[o];
+  bool uncertain = false;
+  gap = kInfinity;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double bound = sphereGap(obstacle.part, parts[i].boundCentre, parts[i].boundRadius);
+    if (bound > band_) {
+      gap = std::min(gap, bound);
+      continue;
+    }
+    const PartContact contact = partContact(placedPart(link, i), obstacle.part, band_);
+    if (contact.contact == Contact::Apart) {
+      gap = std::min(gap, contact.gap);
+      continue;
+    }
+    // A mesh's box overlapping a part says nothing about the mesh itself.
+    if (contact.contact == Contact::Overlapping && obstacle.exact) return Outcome::Overlapping;
+    uncertain = true;
+  }
+  return uncertain ? Outcome::Uncertain : Outcome::Apart;
+}
+
+void FastCollisionChecker::beginLane(const double* poses, int stride, int lane) {
+  lanePoses_ = poses, laneStride_ = stride, lane_ = lane;
+  std::fill(placed_.begin(), placed_.end(), 0);
+  std::fill(boundPlaced_.begin(), boundPlaced_.end(), 0);
+}
+
+void FastCollisionChecker::placeBound(int link) {
+  const auto ul = static_cast<std::size_t>(link);
+  const double* c = links_[ul].boundCentre;
+  double m[kValues];
+  for (int i = 0; i < kValues; ++i) m[i] = lanePoses_[(link * kValues + i) * laneStride_ + lane_];
+  boundX_[ul] = m[0] * c[0] + m[1] * c[1] + m[2] * c[2] + m[9];
+  boundY_[ul] = m[3] * c[0] + m[4] * c[1] + m[5] * c[2] + m[10];
+  boundZ_[ul] = m[6] * c[0] + m[7] * c[1] + m[8] * c[2] + m[11];
+  boundPlaced_[ul] = 1;
+}
+
+// The geometric stages of one configuration (lane `lane` of poses laid out with `stride` lanes).
+// onFlag(Flag) is called for every pair not proven apart and returns true to stop. Returns the
+// safe displacement (see ScreenResult) when every pair was proven apart, 0 when some were
+// flagged, -1 when stopped. With pairGaps, every pair's gap is written there (0 when flagged).
+template <class OnFlag>
+double FastCollisionChecker::screenLane(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag, double* pairGaps) {
+  beginLane(poses, stride, lane);
+  for (int l : boundLinks_) placeBound(l);
+  double safe = kInfinity;
+  bool flagged = false;
+
+  // Self: the link bounds of every pair in one branch-free pass (it vectorises), then the pairs
+  // whose bounds come within the band, part by part.
+  const std::size_t selfCount = selfPairs_.size();
+  {
+    const int* pa = pairA_.data();
+    const int* pb = pairB_.data();
+    const double *bx = boundX_.data(), *by = boundY_.data(), *bz = boundZ_.data();
+    double* __restrict dx = pairDx_.data();
+    double* __restrict dy = pairDy_.data();
+    double* __restrict dz = pairDz_.data();
+    for (std::size_t p = 0; p < selfCount; ++p)  // gathers
+      dx[p] = bx[pa[p]] - bx[pb[p]], dy[p] = by[pa[p]] - by[pb[p]], dz[p] = bz[pa[p]] - bz[pb[p]];
+    const double* sum = pairRadiusSum_.data();
+    double* __restrict gaps = pairGaps_.data();
+    for (std::size_t p = 0; p < selfCount; ++p) gaps[p] = std::sqrt(dx[p] * dx[p] + dy[p] * dy[p] + dz[p] * dz[p]) - sum[p];
+  }
+  for (std::size_t p = 0; p < selfCount; ++p) {
+    if (armOnly && !pairIsArm_[p]) continue;
+    double gap = pairGaps_[p];
+    if (!(gap > band_)) {
+      const auto [a, b] = selfPairs_[p];
+      const Outcome outcome = linkPairContact(a, b, gap);
+      if (outcome != Outcome::Apart) {
+        flagged = true;
+        if (pairGaps) pairGaps[p] = 0.0;
+        if (onFlag(Flag{true, a, b, outcome})) return -1.0;
+        continue;
+      }
+    }
+    if (pairGaps) pairGaps[p] = gap;
+    safe = std::min(safe, gap * pairShare_[p]);
+  }
+  if (armOnly) return flagged ? 0.0 : safe;
+
+  // Environment: every moving link against every obstacle (static links were decided once), the
+  // link bounds first in one pass per obstacle.
+  const std::size_t linkCount = geometricLinks_.size();
+  for (std::size_t i = 0; i < linkCount; ++i) {
+    const auto l = static_cast<std::size_t>(geometricLinks_[i]);
+    geometricX_[i] = boundX_[l], geometricY_[i] = boundY_[l], geometricZ_[i] = boundZ_[l];
+  }
+  for (std::size_t o = 0; o < obstacles_.size(); ++o)
+    sphereGaps(obstacles_[o].part, geometricX_.data(), geometricY_.data(), geometricZ_.data(), geometricBoundR_.data(),
+               static_cast<int>(linkCount), obstacleGaps_.data() + o * linkCount);
+  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
+    const double* gaps = obstacleGaps_.data() + o * linkCount;
+    for (std::size_t i = 0; i < linkCount; ++i) {
+      double gap = gaps[i];
+      if (!(gap > band_)) {
+        const int l = geometricLinks_[i];
+        const Outcome outcome = linkObstacleContact(l, o, gap);
+        if (outcome != Outcome::Apart) {
+          flagged = true;
+          if (pairGaps) pairGaps[selfCount + o * linkCount + i] = 0.0;
+          if (onFlag(Flag{false, l, static_cast<int>(o), outcome})) return -1.0;
+          continue;
+        }
+      }
+      if (pairGaps) pairGaps[selfCount + o * linkCount + i] = gap;
+      safe = std::min(safe, gap * linkShare_[i]);
+    }
+  }
+  return flagged ? 0.0 : safe;
+}
 
 // How far a point of a link can move per unit of each active joint: for every moving joint on its
 // chain, the distance from the joint origin to the farthest point of the link's geometry in any
@@ -416,7 +333,7 @@ void FastCollisionChecker::computeMotionWeights(const RobotModel& model) {
     linkWeights_.insert(linkWeights_.end(), w.begin(), w.end());
   }
   pairWeights_.clear();
-  for (const auto& [a, b] : movingSelfPairs_) {
+  for (const auto& [a, b] : selfPairs_) {
     const auto chainA = jointChain(model, a), chainB = jointChain(model, b);
     std::vector<int> common;
     for (std::size_t k = 0; k < chainA.size() && k < chainB.size() && chainA[k] == chainB[k]; ++k) common.push_back(chainA[k]);
@@ -436,39 +353,47 @@ void FastCollisionChecker::setMotion(const Configuration& from, const Configurat
     for (std::size_t i = 0; i < dof; ++i) rate += w[i] * delta[i];
     return 1.0 / (rate * (1.0 + 1e-9));
   };
-  for (std::size_t p = 0; p < movingSelfPairs_.size(); ++p) pairShare_[p] = share(pairWeights_.data() + p * dof);
+  for (std::size_t p = 0; p < selfPairs_.size(); ++p) pairShare_[p] = share(pairWeights_.data() + p * dof);
   for (std::size_t i = 0; i < geometricLinks_.size(); ++i) linkShare_[i] = share(linkWeights_.data() + i * dof);
 }
 
 bool FastCollisionChecker::decide(const Configuration& q, const double* poses, int stride, int lane, bool armOnly,
-                                  double* safeDisplacement) {
+                                  double* safeDisplacement, double* pairGaps) {
   if (safeDisplacement) *safeDisplacement = 0.0;
   if (armOnly ? !staticArmSelfCollisions_.empty() : !(staticSelfCollisions_.empty() && staticEnvironmentCollisions_.empty())) {
-    ++statistics_.colliding;
+    ++statistics_.provenColliding;
     return false;
   }
-  bool posesReady = false;
-  bool collides = false;
-  const double safe = runStage(poses, stride, lane, armOnly, [&](bool self, int a, int b) {
-    if (!posesReady) {
-      exact_.kinematics().linkPoses(q, exactPoses_);
-      posesReady = true;
-    }
-    ++statistics_.pairsConfirmed;
-    collides = self ? exact_.linkPairCollides(exactPoses_, a, b)
-                    : exact_.linkObstacleCollides(exactPoses_, a, static_cast<std::size_t>(b));
-    return collides;
-  });
-  if (collides) {
-    ++statistics_.colliding;
+  // Proven overlaps stop at once; uncertain pairs wait, since a proven overlap may still come.
+  uncertain_.clear();
+  const double safe = screenLane(
+      poses, stride, lane, armOnly,
+      [&](const Flag& flag) {
+        if (flag.outcome == Outcome::Overlapping) return true;
+        uncertain_.push_back(flag);
+        return false;
+      },
+      pairGaps);
+  if (safe < 0.0) {
+    ++statistics_.provenColliding;
     return false;
   }
-  if (safe > 0.0) {
-    ++statistics_.sphereFree;
+  if (uncertain_.empty()) {
+    ++statistics_.provenFree;
     if (safeDisplacement) *safeDisplacement = safe;
-  } else {
-    ++statistics_.confirmedFree;
+    return true;
   }
+  exact_.kinematics().linkPoses(q, exactPoses_);
+  for (const Flag& flag : uncertain_) {
+    ++statistics_.pairsConfirmed;
+    const bool collides = flag.self ? exact_.linkPairCollides(exactPoses_, flag.a, flag.b)
+                                    : exact_.linkObstacleCollides(exactPoses_, flag.a, static_cast<std::size_t>(flag.b));
+    if (collides) {
+      ++statistics_.confirmedColliding;
+      return false;
+    }
+  }
+  ++statistics_.confirmedFree;
   return true;
 }
 
@@ -486,14 +411,16 @@ bool FastCollisionChecker::isArmValid(const Configuration& q) {
   return decide(q, poseScratch_.data(), 1, 0, true, nullptr);
 }
 
-void FastCollisionChecker::checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safeDisplacement) {
+void FastCollisionChecker::checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safeDisplacement,
+                                      double* pairGaps) {
+  const std::size_t pairs = pairCount();
   if (count < 1 || count > kLanes) throw std::invalid_argument("checkBatch: 1 to kLanes configurations");
   const int dof = kinematics_.dof();
   if (count == 1) {  // a lone state: the single-lane kinematics is cheaper than a padded batch
     if (configurations[0]->size() != dof) throw std::invalid_argument("configuration size does not match the robot");
     ++checks_;
     kinematics_.computeOne(configurations[0]->data(), poseScratch_.data());
-    valid[0] = decide(*configurations[0], poseScratch_.data(), 1, 0, false, &safeDisplacement[0]);
+    valid[0] = decide(*configurations[0], poseScratch_.data(), 1, 0, false, &safeDisplacement[0], pairGaps);
     return;
   }
   double joints[64 * kLanes];
@@ -511,25 +438,73 @@ void FastCollisionChecker::checkBatch(const Configuration* const* configurations
   kinematics_.computeBatch(q, poseScratch_.data());
   for (int lane = 0; lane < count; ++lane) {
     ++checks_;
-    valid[lane] = decide(*configurations[lane], poseScratch_.data(), kLanes, lane, false, &safeDisplacement[lane]);
+    valid[lane] = decide(*configurations[lane], poseScratch_.data(), kLanes, lane, false, &safeDisplacement[lane],
+                         pairGaps ? pairGaps + static_cast<std::size_t>(lane) * pairs : nullptr);
   }
 }
 
-SphereStageVerdict FastCollisionChecker::sphereStage(const Configuration& q, bool armOnly) {
+void FastCollisionChecker::poseState(const Configuration& q, const std::size_t* pairs, std::size_t count) {
+  if (q.size() != kinematics_.dof()) throw std::invalid_argument("configuration size does not match the robot");
+  // Self pairs below one common link are posed relative to it; anything else in the world.
+  int frame = count > 0 && pairs[0] < selfPairs_.size() ? pairFrame_[pairs[0]] : -1;
+  for (std::size_t k = 1; k < count && frame >= 0; ++k)
+    if (pairs[k] >= selfPairs_.size() || pairFrame_[pairs[k]] != frame) frame = -1;
+  std::fill(posedLinks_.begin(), posedLinks_.end(), 0);
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto& links = frame >= 0 ? pairRelativeLinks_[pairs[k]] : pairLinks_[pairs[k]];
+    for (std::size_t w = 0; w < links.size(); ++w) posedLinks_[w] |= links[w];
+  }
+  kinematics_.computeSome(q.data(), poseScratch_.data(), posedLinks_, frame);
+  beginLane(poseScratch_.data(), 1, 0);
+  posed_ = q;
+}
+
+double FastCollisionChecker::testPair(std::size_t pair) {
+  const std::size_t selfCount = selfPairs_.size();
+  const bool self = pair < selfCount;
+  int a, b;
+  double gap;
+  if (self) {
+    std::tie(a, b) = selfPairs_[pair];
+    for (const int l : {a, b})
+      if (!boundPlaced_[static_cast<std::size_t>(l)]) placeBound(l);
+    const double c1[3] = {boundX_[static_cast<std::size_t>(a)], boundY_[static_cast<std::size_t>(a)], boundZ_[static_cast<std::size_t>(a)]};
+    const double c2[3] = {boundX_[static_cast<std::size_t>(b)], boundY_[static_cast<std::size_t>(b)], boundZ_[static_cast<std::size_t>(b)]};
+    gap = sphereSphereGap(c1, 0.0, c2, 0.0) - pairRadiusSum_[pair];
+  } else {
+    const std::size_t k = pair - selfCount, linkCount = geometricLinks_.size();
+    a = geometricLinks_[k % linkCount];
+    b = static_cast<int>(k / linkCount);
+    if (!boundPlaced_[static_cast<std::size_t>(a)]) placeBound(a);
+    const double c[3] = {boundX_[static_cast<std::size_t>(a)], boundY_[static_cast<std::size_t>(a)], boundZ_[static_cast<std::size_t>(a)]};
+    gap = sphereGap(obstacles_[static_cast<std::size_t>(b)].part, c, geometricBoundR_[k % linkCount]);
+  }
+  if (gap > band_) return gap;
+  const Outcome outcome = self ? linkPairContact(a, b, gap) : linkObstacleContact(a, static_cast<std::size_t>(b), gap);
+  if (outcome == Outcome::Apart) return gap;
+  if (outcome == Outcome::Overlapping) return -1.0;
+  exact_.kinematics().linkPoses(posed_, exactPoses_);
+  ++statistics_.pairsConfirmed;
+  const bool collides = self ? exact_.linkPairCollides(exactPoses_, a, b) : exact_.linkObstacleCollides(exactPoses_, a, static_cast<std::size_t>(b));
+  return collides ? -1.0 : 0.0;
+}
+
+ScreenResult FastCollisionChecker::screen(const Configuration& q, bool armOnly) {
   if (q.size() != kinematics_.dof()) throw std::invalid_argument("configuration size does not match the robot");
   kinematics_.computeOne(q.data(), poseScratch_.data());
-  SphereStageVerdict verdict;
-  verdict.selfPairs = armOnly ? staticArmSelfCollisions_ : staticSelfCollisions_;
-  if (!armOnly) verdict.obstaclePairs = staticEnvironmentCollisions_;
-  const double safe = runStage(poseScratch_.data(), 1, 0, armOnly, [&](bool self, int a, int b) {
-    if (self)
-      verdict.selfPairs.emplace_back(a, b);
+  ScreenResult result;
+  result.overlappingSelf = armOnly ? staticArmSelfCollisions_ : staticSelfCollisions_;
+  if (!armOnly) result.overlappingObstacle = staticEnvironmentCollisions_;
+  const double safe = screenLane(poseScratch_.data(), 1, 0, armOnly, [&](const Flag& flag) {
+    const bool overlapping = flag.outcome == Outcome::Overlapping;
+    if (flag.self)
+      (overlapping ? result.overlappingSelf : result.uncertainSelf).emplace_back(flag.a, flag.b);
     else
-      verdict.obstaclePairs.emplace_back(a, static_cast<std::size_t>(b));
+      (overlapping ? result.overlappingObstacle : result.uncertainObstacle).emplace_back(flag.a, static_cast<std::size_t>(flag.b));
     return false;
   });
-  verdict.safeDisplacement = verdict.free() ? std::max(safe, 0.0) : 0.0;
-  return verdict;
+  result.safeDisplacement = result.provenFree() ? std::max(safe, 0.0) : 0.0;
+  return result;
 }
 
 }  // namespace pmdplan

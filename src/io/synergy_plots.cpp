@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/io/svg_elements.hpp"
 #include "pmdplan/synergy/figure7_joint_pairs.hpp"
 
 namespace pmdplan {
@@ -17,37 +18,13 @@ namespace {
 // 42.19, 77.12 and 84.71 % of the variance (its Fig. 10).
 constexpr std::array<double, 3> kPaperCumulativePercent{42.19, 77.12, 84.71};
 
-const char* const kFont = "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\"";
-
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  std::string result = text;
-  if (result.find_first_not_of("-0.") == std::string::npos && result.front() == '-') result.erase(0, 1);  // no "-0.0"
-  return result;
-}
-
-std::string px(double value) { return fixed(value, 1); }
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
-
-std::string text(double x, double y, const std::string& content, const std::string& attributes = "") {
-  return "<text x=\"" + px(x) + "\" y=\"" + px(y) + "\" " + attributes + ">" + escaped(content) + "</text>\n";
-}
+using svg::fixed;
+using svg::kFont;
+using svg::px;
+using svg::text;
 
 std::string line(double x1, double y1, double x2, double y2, const std::string& stroke, double width = 1.0) {
-  return "<line x1=\"" + px(x1) + "\" y1=\"" + px(y1) + "\" x2=\"" + px(x2) + "\" y2=\"" + px(y2) + "\" stroke=\"" + stroke +
-         "\" stroke-width=\"" + fixed(width, 2) + "\"/>\n";
+  return svg::line(x1, y1, x2, y2, stroke, "stroke-width=\"" + fixed(width, 2) + "\"");
 }
 
 /// Value range [low, high] onto pixels [from, to] (to < from for a y axis pointing up).

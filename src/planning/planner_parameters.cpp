@@ -26,6 +26,7 @@ void PlannerParameters::check() const {
                                                     std::to_string(neighbourThresholdFactor));
   if (armTrials < 1) throw InputError("", "arm-trials", "must be at least 1, got " + std::to_string(armTrials));
   if (handTrials < 1) throw InputError("", "hand-trials", "must be at least 1, got " + std::to_string(handTrials));
+  if (minSweepVisits < 1) throw InputError("", "sweep-visits", "must be at least 1");
   if (maxSamples < 1) throw InputError("", "max-samples", "must be at least 1");
   if (!(timeLimit > 0.0))
     throw InputError("", "time-limit", "must be a positive number of seconds, got " + std::to_string(timeLimit));

@@ -84,18 +84,26 @@ PlannerStatus PmdRoadmapPlanner::solve() {
     statistics_.finalArmHalfSize = rho;
     const std::size_t maxsteps = segmentIntervals(armSampler_->segmentLength(), rho);
     SearchRange searchRange;
-    for (std::size_t i = 0; i <= maxsteps; ++i) {
-      const double step = vanDerCorput(i, maxsteps);
-      if (!searchRange.contains(step)) continue;
-      if (progress_)
-        progress_({k, rho, i, maxsteps + 1, searchRange, statistics_.samples, roadmap_.nodeCount(),
-                   roadmap_.componentCount(), elapsedSeconds()});
-      const HypercubeOutcome outcome = sampleHypercube(step, rho);
-      if (outcome.stop) return endRun(*outcome.stop);
-      if (!outcome.node) continue;
-      connectSample(roadmap_, *outcome.node, rule, forcedNeighbour(step), motionValidator_);
-      if (roadmap_.sameComponent(startNode_, goalNode_)) return findPath();
-      searchRange = updateSearchRange(roadmap_, startNode_, goalNode_);
+    // One pass over the hypercubes in the search range, as the paper; when the range has
+    // narrowed to fewer than minSweepVisits of them, more passes while they still add nodes.
+    std::size_t visits = 0;
+    for (bool added = true; added && visits < parameters_.minSweepVisits;) {
+      added = false;
+      for (std::size_t i = 0; i <= maxsteps; ++i) {
+        const double step = vanDerCorput(i, maxsteps);
+        if (!searchRange.contains(step)) continue;
+        ++visits;
+        if (progress_)
+          progress_({k, rho, i, maxsteps + 1, searchRange, statistics_.samples, roadmap_.nodeCount(),
+                     roadmap_.componentCount(), elapsedSeconds()});
+        const HypercubeOutcome outcome = sampleHypercube(step, rho);
+        if (outcome.stop) return endRun(*outcome.stop);
+        if (!outcome.node) continue;
+        added = true;
+        connectSample(roadmap_, *outcome.node, rule, forcedNeighbour(step), motionValidator_);
+        if (roadmap_.sameComponent(startNode_, goalNode_)) return findPath();
+        searchRange = updateSearchRange(roadmap_, startNode_, goalNode_);
+      }
     }
   }
 }

@@ -1,10 +1,13 @@
 #pragma once
 // Seeded random numbers that are the same on every platform: std::mt19937_64 is specified exactly,
-// the std:: distributions are not, so uniform and normal draws are made here.
+// the std:: distributions and the C library's log, sin and cos are not, so uniform and normal draws
+// are made here with portable_math.hpp.
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <random>
+
+#include "pmdplan/core/portable_math.hpp"
 
 namespace pmdplan {
 
@@ -24,10 +27,10 @@ public:
     }
     const double u1 = 1.0 - uniform();  // (0, 1]: log stays finite
     const double u2 = uniform();
-    const double radius = std::sqrt(-2.0 * std::log(u1));
-    spare_ = radius * std::sin(2.0 * std::numbers::pi * u2);
+    const double radius = std::sqrt(-2.0 * portable::log(u1));
+    spare_ = radius * portable::sin(2.0 * std::numbers::pi * u2);
     hasSpare_ = true;
-    return radius * std::cos(2.0 * std::numbers::pi * u2);
+    return radius * portable::cos(2.0 * std::numbers::pi * u2);
   }
 
   /// Uniform integer in [0, n).

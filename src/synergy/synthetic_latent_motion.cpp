@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "pmdplan/core/portable_math.hpp"
+
 namespace pmdplan {
 namespace {
 
@@ -20,7 +22,7 @@ void addPrimitive(Primitive primitive, double amplitude, int start, int length, 
     case Primitive::Pinch: weights << 0.3, 0.7, 0.7, 0.0; break;       // thumb meets the closing fingers
   }
   for (int i = 0; i < length && start + i < latent.rows(); ++i) {
-    const double phase = std::sin(std::numbers::pi * (i + 0.5) / length);
+    const double phase = portable::sin(std::numbers::pi * (i + 0.5) / length);
     for (int k = 0; k < 4 && k < latent.cols(); ++k) latent(start + i, k) += amplitude * weights(k) * phase * phase;
   }
 }
@@ -29,7 +31,7 @@ void addPrimitive(Primitive primitive, double amplitude, int start, int length, 
 
 Eigen::VectorXd ornsteinUhlenbeck(int frames, double sampleRateHz, double timeConstantS, DeterministicRandom& random) {
   Eigen::VectorXd path(frames);
-  const double decay = std::exp(-1.0 / (sampleRateHz * timeConstantS));
+  const double decay = portable::exp(-1.0 / (sampleRateHz * timeConstantS));
   const double kick = std::sqrt(1.0 - decay * decay);
   double value = random.normal();
   for (int f = 0; f < frames; ++f) {

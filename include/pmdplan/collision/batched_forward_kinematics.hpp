@@ -7,6 +7,7 @@
 // ForwardKinematics::jointValues; results equal ForwardKinematics's to rounding (the fast checker's
 // sphere margin absorbs the difference).
 #include <Eigen/Geometry>
+#include <cstdint>
 #include <vector>
 
 #include "pmdplan/model/robot_model.hpp"
@@ -32,6 +33,19 @@ public:
   /// One configuration (dof values); poses[link * 12 + value].
   void computeOne(const double* q, double* poses) const;
 
+  /// A set of links, a bit per link index.
+  using LinkSet = std::vector<std::uint64_t>;
+  LinkSet emptyLinkSet() const { return LinkSet(static_cast<std::size_t>(linkCount_ + 63) / 64, 0); }
+  /// Adds the link and every link between it and the root (what its pose is computed from).
+  void addWithAncestors(LinkSet& set, int link) const;
+  /// As computeOne, for the links of `links` only (a set closed under ancestors, as
+  /// addWithAncestors makes); the other poses are left as they were. With a `frame` link, the
+  /// poses are relative to that link instead of the world (its pose is the identity, `links`
+  /// holds links below it only): enough for distances between links below it, at less cost.
+  void computeSome(const double* q, double* poses, const LinkSet& links, int frame = -1) const;
+  /// The link of which both are descendants (or one is the other), deepest first.
+  int commonAncestor(int a, int b) const;
+
   /// Whether the AVX2 kernels run on this CPU (else the SSE2 ones).
   static bool usesAvx2();
 
@@ -43,6 +57,12 @@ public:
     int joint = 0;   ///< index into RobotModel::joints()
     double origin[kPoseValues] = {};
     double axis[3] = {0, 0, 1};
+    /// The origin's rotation is a signed permutation (rpy in multiples of 90 degrees, as most URDF
+    /// joints): column k of the child is sign[k] times column column[k] of the parent, no products.
+    bool permutes = false;
+    int column[3] = {0, 1, 2};
+    double sign[3] = {1, 1, 1};
+    bool translates = true;  ///< false when the origin has no translation
   };
   /// Where each joint's value comes from.
   struct ValueSource {
@@ -61,6 +81,7 @@ private:
   int dof_ = 0;
   int linkCount_ = 0;
   Plan plan_;
+  std::vector<int> parentLink_;  ///< per link, -1 for the root
 };
 
 }  // namespace pmdplan

@@ -1,120 +1,168 @@
 #pragma once
-// The fast checker: a conservative sphere stage, then the exact FCL checker on what it flags only.
-// Stage 1 covers every link by spheres that enclose its primitives (LinkSphereModel) and tests
-// the same enabled self pairs as the exact checker (link, then primitive bounding spheres exit
-// early) and every link against the obstacles (SphereEnvironment). Spheres apart means the real
-// geometry is apart, so "free" is final; a flagged link pair or link-obstacle pair is decided by
-// ExactCollisionChecker::linkPairCollides / linkObstacleCollides on the exact checker's own poses.
-// The answer therefore equals ExactCollisionChecker::isValid / isArmValid on every configuration.
-// Pairs that no joint moves (links fixed to the base, static obstacles) are decided once, exactly.
+// The fast checker: the exact checker's answers at a fraction of its cost.
+// Forward kinematics runs for several configurations at once (BatchedForwardKinematics). Every
+// link is a few convex parts equal to its URDF primitives (link_part_model.hpp) inside a bounding
+// sphere. A broad phase tests the bounding spheres of the same enabled self pairs as the exact
+// checker and of every link against the obstacles, in branch-free passes; the pairs whose spheres
+// meet go to the narrow phase, part against part (partContact: closed form for two capsules, GJK
+// otherwise), which proves them apart (with a lower bound on the gap) or overlapping by more than
+// `band`. Only a pair within `band` of touching, or near a mesh obstacle, is handed to FCL
+// (ExactCollisionChecker::linkPairCollides / linkObstacleCollides) — so every answer equals the
+// exact checker's while FCL runs on almost no checks. Pairs that no joint moves (links fixed to
+// the base, static obstacles) are decided once, by FCL.
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
 #include "pmdplan/collision/batched_forward_kinematics.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
-#include "pmdplan/collision/link_sphere_model.hpp"
-#include "pmdplan/collision/sphere_environment.hpp"
+#include "pmdplan/collision/link_part_model.hpp"
 #include "pmdplan/collision/state_validator.hpp"
 
 namespace pmdplan {
 
-struct FastCheckerParameters {
-  SphereCoverParameters spheres;
-};
-
-/// What the sphere stage alone says about one configuration.
-struct SphereStageVerdict {
-  std::vector<std::pair<int, int>> selfPairs;                  ///< flagged link pairs (link indices)
-  std::vector<std::pair<int, std::size_t>> obstaclePairs;      ///< flagged (link, obstacle index)
-  /// When nothing is flagged: how far (m) every point of the robot may move with all tested pairs
-  /// staying apart (a lower bound: sphere gaps, halved for two moving links); 0 when flagged.
-  /// After FastCollisionChecker::setMotion: the fraction of that segment instead.
+/// What the geometric stages alone say about one configuration (no FCL).
+struct ScreenResult {
+  /// Pairs proven to overlap by more than the band (FCL agrees: they collide).
+  std::vector<std::pair<int, int>> overlappingSelf;               ///< link indices
+  std::vector<std::pair<int, std::size_t>> overlappingObstacle;   ///< (link, obstacle index)
+  /// Pairs neither proven apart nor overlapping: FCL decides them.
+  std::vector<std::pair<int, int>> uncertainSelf;
+  std::vector<std::pair<int, std::size_t>> uncertainObstacle;
+  /// When every pair is proven apart: how far (m) every point of the robot may move with all of
+  /// them staying apart (a lower bound from the gaps, halved for two moving links); else 0.
   double safeDisplacement = 0.0;
-  bool free() const { return selfPairs.empty() && obstaclePairs.empty(); }
+  bool provenFree() const {
+    return overlappingSelf.empty() && overlappingObstacle.empty() && uncertainSelf.empty() && uncertainObstacle.empty();
+  }
 };
 
 /// How the checks of a FastCollisionChecker were decided.
 struct FastCheckStatistics {
-  std::size_t sphereFree = 0;      ///< free by the sphere stage alone
-  std::size_t confirmedFree = 0;   ///< flagged, found free by FCL on the flagged pairs
-  std::size_t colliding = 0;       ///< flagged and colliding
-  std::size_t pairsConfirmed = 0;  ///< FCL pair tests run
+  std::size_t provenFree = 0;       ///< every pair proven apart by the geometric stages
+  std::size_t provenColliding = 0;  ///< a pair proven overlapping (FCL not asked)
+  std::size_t confirmedFree = 0;    ///< uncertain pairs, all found free by FCL
+  std::size_t confirmedColliding = 0;  ///< an uncertain pair found colliding by FCL
+  std::size_t pairsConfirmed = 0;   ///< FCL pair tests run
 };
 
 class FastCollisionChecker : public StateValidator {
 public:
   static constexpr int kLanes = BatchedForwardKinematics::kLanes;
+  /// Parts closer than this (m) to touching, or interpenetrating by less, are left to FCL: far
+  /// above FCL's own tolerances (about 1e-6 m) and far below anything a plan could notice.
+  static constexpr double kDefaultBand = 2e-5;
 
   /// `exact` must be built on the same task and outlive this checker; its check count is not
   /// touched (confirmations are pair tests).
-  FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, const FastCheckerParameters& parameters = {});
+  FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, double band = kDefaultBand);
 
   bool isValid(const Configuration& q) override;
   bool isArmValid(const Configuration& q) override;
   std::size_t checkCount() const override { return checks_; }
 
   /// Up to kLanes configurations at once (forward kinematics batched): valid[i] as isValid, and
-  /// safe[i] > 0 when the sphere stage alone found it free: as SphereStageVerdict's
-  /// safeDisplacement, or after setMotion the fraction of that segment by which the robot may
-  /// move from this state with every tested pair staying apart. Counts `count` checks.
-  void checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safe);
+  /// safe[i] > 0 when the geometric stages alone proved it free: ScreenResult's safeDisplacement,
+  /// or after setMotion the fraction of that segment by which the robot may move from this state
+  /// with every pair staying apart. With `pairGaps` (count x pairCount() values), the gap of every
+  /// pair of every valid configuration is written there too (0 for a pair only FCL could clear).
+  /// Counts `count` checks.
+  void checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safe, double* pairGaps = nullptr);
+
+  // One pair at a time, for motion checks that follow each pair along a segment (FastSegmentChecker).
+  // Pairs are numbered: the self pairs with a moving link, then every moving link with geometry
+  // against every obstacle.
+  std::size_t pairCount() const { return selfPairs_.size() + geometricLinks_.size() * obstacles_.size(); }
+  /// Forward kinematics of q for testPair of the given pairs only (not counted as a check).
+  void poseState(const Configuration& q, const std::size_t* pairs, std::size_t count);
+  /// Pair `pair` at the posed state: a lower bound on its gap (m), 0 if only FCL could clear it
+  /// (and FCL did), -1 if it collides.
+  double testPair(std::size_t pair);
+  /// After setMotion: 1 / (how far, in m, the pair's two sides may approach each other over the
+  /// whole segment), so gap * pairShare is the fraction of the segment it stays apart for.
+  double pairShare(std::size_t pair) const {
+    return pair < selfPairs_.size() ? pairShare_[pair] : linkShare_[(pair - selfPairs_.size()) % geometricLinks_.size()];
+  }
 
   /// Measures checkBatch's safe values in fractions of the straight segment from -> to, with a
   /// displacement bound per link pair (only the joints between the two links count) and per
   /// link (its own chain), rather than one bound for the whole robot.
   void setMotion(const Configuration& from, const Configuration& to);
 
-  /// The sphere stage alone, every flagged pair listed (no FCL). Not counted as a check.
-  SphereStageVerdict sphereStage(const Configuration& q, bool armOnly = false);
+  /// The geometric stages alone, every pair not proven apart listed. Not counted as a check.
+  ScreenResult screen(const Configuration& q, bool armOnly = false);
 
   const FastCheckStatistics& statistics() const { return statistics_; }
-  const LinkSphereModel& spheres() const { return spheres_; }
+  const std::vector<LinkParts>& links() const { return links_; }
   const ExactCollisionChecker& exact() const { return exact_; }
+  double band() const { return band_; }
 
 private:
+  enum class Outcome { Apart, Overlapping, Uncertain };
+  /// A pair not proven apart: self (two links) or a link and an obstacle.
+  struct Flag {
+    bool self;
+    int a;
+    int b;
+    Outcome outcome;
+  };
+
   template <class OnFlag>
-  double runStage(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag);
+  double screenLane(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag, double* pairGaps = nullptr);
+  void beginLane(const double* poses, int stride, int lane);
+  void placeBound(int link);
+  Outcome linkPairContact(int a, int b, double& gap);
+  Outcome linkObstacleContact(int link, std::size_t obstacle, double& gap);
+  /// The link's parts with their bounding spheres placed (the rest of each part is not yet).
+  const ConvexPart* placedBounds(int link);
+  /// Part `index` of the link, all of it placed (placedBounds first).
+  const ConvexPart& placedPart(int link, std::size_t index);
   void computeMotionWeights(const RobotModel& model);
-  void placeLink(int link, const double* poses, int stride, int lane);
-  /// Places the spheres of one primitive of a placed link; returns their offset in world*_.
-  int placeGroup(int link, int group);
-  /// The world box of a box group of a placed link (turned on first use).
-  const SolidPrimitive& placedBox(int link, int group);
-  double groupPairGap(int a, int ga, int b, int gb, const double* boundB);
-  bool decide(const Configuration& q, const double* poses, int stride, int lane, bool armOnly, double* safeDisplacement);
+  bool decide(const Configuration& q, const double* poses, int stride, int lane, bool armOnly, double* safeDisplacement,
+              double* pairGaps = nullptr);
 
   ExactCollisionChecker& exact_;
-  LinkSphereModel spheres_;
-  SphereEnvironment environment_;
+  double band_;
+  std::vector<LinkParts> links_;
+  std::vector<ObstaclePart> obstacles_;
   BatchedForwardKinematics kinematics_;
-  std::vector<char> moving_;  ///< per link: does any joint move it?
-  std::vector<std::pair<int, int>> movingSelfPairs_;
-  std::vector<char> pairIsArm_;  ///< per movingSelfPairs_ entry
-  std::vector<int> pairA_, pairB_;  ///< the same pairs as plain arrays for the bound pass
-  std::vector<double> pairRadiusSum_, pairGaps_, pairDx_, pairDy_, pairDz_;
+  std::vector<char> moving_;     ///< per link: does any joint move it?
+  std::vector<int> boundLinks_;  ///< every link with geometry
+  std::vector<int> geometricLinks_;  ///< moving links with geometry
+  std::vector<double> geometricBoundR_;
+
+  // Self pairs with a moving link, in the exact checker's order, as plain arrays for the broad phase.
+  std::vector<std::pair<int, int>> selfPairs_;
+  std::vector<char> pairIsArm_;
+  std::vector<int> pairA_, pairB_;
+  std::vector<double> pairRadiusSum_;
   /// Gap multipliers for the safe value: 1 / (links that move) by default (metres), or
   /// 1 / (relative displacement over the segment) after setMotion (fractions of the segment).
   std::vector<double> pairShare_, linkShare_;
   std::vector<double> pairWeights_, linkWeights_;  ///< metres per unit of each active joint
-  std::vector<int> boundLinks_;  ///< every link with geometry
-  std::vector<double> movingBoundX_, movingBoundY_, movingBoundZ_, movingBoundR_, obstacleGaps_;  ///< by geometricLinks_ entry
-  std::vector<int> geometricLinks_;  ///< moving links with geometry
+  std::vector<BatchedForwardKinematics::LinkSet> pairLinks_;  ///< per pair: the links its world poses need
+  /// Per self pair: the deepest link above both, and the links below it that their poses relative
+  /// to it need (the pair's distance does not depend on the joints above).
+  std::vector<int> pairFrame_;
+  std::vector<BatchedForwardKinematics::LinkSet> pairRelativeLinks_;
+  BatchedForwardKinematics::LinkSet posedLinks_;
   // Pairs of links no joint moves that collide (decided once); any makes every check fail.
   std::vector<std::pair<int, int>> staticSelfCollisions_, staticArmSelfCollisions_;
   std::vector<std::pair<int, std::size_t>> staticEnvironmentCollisions_;
 
-  // Scratch for one lane: world bounds and spheres, placed lazily per link.
-  std::vector<double> boundX_, boundY_, boundZ_;
-  std::vector<int> sphereOffset_, groupOffset_;
-  std::vector<double> worldX_, worldY_, worldZ_, worldR_;
-  std::vector<double> groupX_, groupY_, groupZ_, groupR_;
-  std::vector<SolidPrimitive> worldBoxes_;  ///< box groups, by group index
-  std::vector<Capsule> worldCapsules_;      ///< capsule groups, by group index
-  std::vector<char> placed_, groupPlaced_, boxPlaced_;
-  std::vector<double> linkPoses_;  ///< placed links' poses (12 values each)
+  // Scratch for one lane: link bound centres; parts placed in the world on first use.
+  const double* lanePoses_ = nullptr;
+  int laneStride_ = 1, lane_ = 0;
+  std::vector<double> boundX_, boundY_, boundZ_;           ///< by link
+  std::vector<double> geometricX_, geometricY_, geometricZ_;  ///< by geometricLinks_ entry
+  std::vector<double> pairGaps_, pairDx_, pairDy_, pairDz_, obstacleGaps_;
+  std::vector<int> partOffset_;
+  std::vector<ConvexPart> worldParts_;
+  std::vector<char> placed_, boundPlaced_, partPlaced_;
+  std::vector<double> linkPoses_;  ///< placed links' poses, 12 values each
   std::vector<double> poseScratch_;
+  Configuration posed_;  ///< the state poseState last posed
+  std::vector<Flag> uncertain_;
   LinkPoses exactPoses_;
 
   std::size_t checks_ = 0;

@@ -30,6 +30,13 @@ struct PlannerParameters {
   int armTrials = 10;
   /// n_H: hand configurations tried per arm configuration (Table 3: 10; full-space baseline 20).
   int handTrials = 10;
+  /// Hypercube visits a sweep makes before rho_a grows, at least. A sweep visits every hypercube
+  /// of the search range once (Algorithm 4); once the range has narrowed to a few hypercubes (the
+  /// start's component reaches the goal's hypercube but the goal is not joined yet), one pass is
+  /// a visit or two, and rho_a would blow up to the whole arm box in seven failed tries. So a
+  /// narrow range is passed over again, while its passes still add nodes, until this many visits.
+  /// Not in the paper (it reports no such runs); 1 restores the literal reading. Default 10.
+  std::size_t minSweepVisits = 10;
   /// N: the run fails once this many arm trials (numSamples) have been made. Table 3 gives 100
   /// (10,000 full) for the authors' counting; here it is large, so the time limit is the real bound.
   std::size_t maxSamples = 10'000'000;
@@ -45,7 +52,7 @@ struct PlannerParameters {
   static PlannerParameters defaultsFor(HandSamplingMode mode);
 
   /// Throws InputError (no file; the field named as on the command line: "rho-a", "neighbours",
-  /// "neighbour-threshold", "arm-trials", "hand-trials", "max-samples", "time-limit") for values out of
+  /// "neighbour-threshold", "arm-trials", "hand-trials", "sweep-visits", "max-samples", "time-limit") for values out of
   /// range.
   void check() const;
 };

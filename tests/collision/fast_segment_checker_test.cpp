@@ -1,6 +1,6 @@
 // Done-when 1 of issue 6 (segments): the batched motion checks equal SegmentChecker's on the exact
 // checker on 10,000 short random segments over the five tasks, about half of them blocked.
-#include "pmdplan/collision/batched_segment_checker.hpp"
+#include "pmdplan/collision/fast_segment_checker.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +29,7 @@ TEST(BisectionOrder, VisitsEveryInteriorIndexOnceCoarseToFine) {
   for (long i = 0; i < 999; ++i) EXPECT_EQ(sorted[static_cast<std::size_t>(i)], i + 1);
 }
 
-TEST(BatchedSegmentChecker, EqualsSegmentCheckerOnShortRandomSegmentsOfEveryTask) {
+TEST(FastSegmentChecker, EqualsSegmentCheckerOnShortRandomSegmentsOfEveryTask) {
   constexpr int kPerTask = 2000;
   std::size_t total = 0, blocked = 0, exactStates = 0, fastStates = 0, skipped = 0;
   for (const auto& name : kTasks) {
@@ -39,7 +39,7 @@ TEST(BatchedSegmentChecker, EqualsSegmentCheckerOnShortRandomSegmentsOfEveryTask
     ExactCollisionChecker reference(task);
     FastCollisionChecker fast(task, exact);
     SegmentChecker slow(reference, model, 0.001);
-    BatchedSegmentChecker batched(fast, model, 0.001);
+    FastSegmentChecker batched(fast, model, 0.001);
     RandomSource random(77);
     int made = 0;
     while (made < kPerTask) {
