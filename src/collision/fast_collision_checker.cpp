@@ -110,6 +110,15 @@ FastCollisionChecker::FastCollisionChecker(const Task& task, ExactCollisionCheck
     pairLinks_.push_back(std::move(links));
   }
   posedLinks_ = kinematics_.emptyLinkSet();
+  boundLanes_.assign(n * 3 * kLanes, 0.0);
+  selfLaneGaps_.assign(selfPairs_.size() * kLanes, 0.0);
+  outerLanes_.assign(worldParts_.size() * 6 * kLanes, 0.0);
+  outerPlaced_.assign(n, 0);
+  geometricLanesX_.assign(geometricLinks_.size() * kLanes, 0.0);
+  geometricLanesY_ = geometricLanesZ_ = obstacleLaneGaps_ = geometricLanesX_;
+  for (std::size_t i = 0; i < geometricLinks_.size(); ++i)
+    for (int l = 0; l < kLanes; ++l) geometricLanesR_.push_back(geometricBoundR_[i]);
+
   for (std::size_t l = 0; l < n; ++l)
     if (!moving_[l] && !links_[l].empty())
       for (std::size_t o = 0; o < obstacles_.size(); ++o)
@@ -383,6 +392,10 @@ bool FastCollisionChecker::decide(const Configuration& q, const double* poses, i
     if (safeDisplacement) *safeDisplacement = safe;
     return true;
   }
+  return confirmUncertain(q);
+}
+
+bool FastCollisionChecker::confirmUncertain(const Configuration& q) {
   exact_.kinematics().linkPoses(q, exactPoses_);
   for (const Flag& flag : uncertain_) {
     ++statistics_.pairsConfirmed;
@@ -413,7 +426,6 @@ bool FastCollisionChecker::isArmValid(const Configuration& q) {
 
 void FastCollisionChecker::checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safeDisplacement,
                                       double* pairGaps) {
-  const std::size_t pairs = pairCount();
   if (count < 1 || count > kLanes) throw std::invalid_argument("checkBatch: 1 to kLanes configurations");
   const int dof = kinematics_.dof();
   if (count == 1) {  // a lone state: the single-lane kinematics is cheaper than a padded batch
@@ -436,11 +448,8 @@ void FastCollisionChecker::checkBatch(const Configuration* const* configurations
     for (int i = 0; i < dof; ++i) q[i * kLanes + lane] = c[i];
   }
   kinematics_.computeBatch(q, poseScratch_.data());
-  for (int lane = 0; lane < count; ++lane) {
-    ++checks_;
-    valid[lane] = decide(*configurations[lane], poseScratch_.data(), kLanes, lane, false, &safeDisplacement[lane],
-                         pairGaps ? pairGaps + static_cast<std::size_t>(lane) * pairs : nullptr);
-  }
+  checks_ += static_cast<std::size_t>(count);
+  screenBatch(configurations, count, poseScratch_.data(), valid, safeDisplacement, pairGaps);
 }
 
 void FastCollisionChecker::poseState(const Configuration& q, const std::size_t* pairs, std::size_t count) {

@@ -55,13 +55,12 @@ bool FastSegmentChecker::isValid(const Configuration& from, const Configuration&
   constexpr int kLanes = FastCollisionChecker::kLanes;
   for (long begin = 0; begin < coarse; begin += kLanes) {
     const int count = static_cast<int>(std::min<long>(kLanes, coarse - begin));
-    Configuration batch[kLanes];
     const Configuration* pointers[kLanes];
     bool valid[kLanes];
     double safe[kLanes];
     for (int k = 0; k < count; ++k) {
-      stateAt(order_[static_cast<std::size_t>(begin + k)], batch[k]);
-      pointers[k] = &batch[k];
+      stateAt(order_[static_cast<std::size_t>(begin + k)], batch_[k]);
+      pointers[k] = &batch_[k];
     }
     states_.checkBatch(pointers, count, valid, safe, coarseGaps_.data() + static_cast<std::size_t>(begin) * pairs);
     statesChecked_ += static_cast<std::size_t>(count);
@@ -69,13 +68,10 @@ bool FastSegmentChecker::isValid(const Configuration& from, const Configuration&
       if (!valid[k]) return false;
   }
 
-  // 2. The sweep. certified_[p]: the last state pair p is known free up to (from state 1 on);
-  // bucket i lists the pairs whose certificate ends just before state i.
-  certified_.assign(pairs, 0);
+  // 2. The sweep: bucket i lists the pairs whose certificate ends just before state i.
   bucketHead_.assign(static_cast<std::size_t>(n) + 1, -1);
   nextInBucket_.resize(pairs);
   const auto schedule = [&](std::size_t p, long lastFree) {
-    certified_[p] = lastFree;
     if (lastFree + 1 >= n) return;  // free to the end
     nextInBucket_[p] = bucketHead_[static_cast<std::size_t>(lastFree + 1)];
     bucketHead_[static_cast<std::size_t>(lastFree + 1)] = static_cast<int>(p);

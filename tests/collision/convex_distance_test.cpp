@@ -98,6 +98,29 @@ TEST(ConvexDistance, SegmentDistanceEqualsTheSampledMinimum) {
   EXPECT_NEAR(segmentDistance(point, point, a, b), 1.0, 1e-15);
 }
 
+TEST(ConvexDistance, TheLaneSegmentDistancesEqualTheScalarOne) {
+  RandomSource random(3);
+  constexpr int L = kSegmentLanes;
+  for (int trial = 0; trial < 2000; ++trial) {
+    double p0[3 * L], p1[3 * L], q0[3 * L], q1[3 * L], lanes[L];
+    for (int l = 0; l < L; ++l)
+      for (int i = 0; i < 3; ++i) {
+        p0[i * L + l] = random.uniform(-0.1, 0.1), p1[i * L + l] = random.uniform(-0.1, 0.1);
+        q0[i * L + l] = random.uniform(-0.1, 0.1), q1[i * L + l] = random.uniform(-0.1, 0.1);
+        // Points and parallel segments too: every branch of the scalar version.
+        if ((trial + l) % 5 == 0) p1[i * L + l] = p0[i * L + l];
+        if ((trial + l) % 7 == 0) q1[i * L + l] = q0[i * L + l];
+        if ((trial + l) % 11 == 0) q1[i * L + l] = q0[i * L + l] + (p1[i * L + l] - p0[i * L + l]);
+      }
+    segmentDistances(p0, p1, q0, q1, lanes);
+    for (int l = 0; l < L; ++l) {
+      const double a[3] = {p0[l], p0[L + l], p0[2 * L + l]}, b[3] = {p1[l], p1[L + l], p1[2 * L + l]};
+      const double c[3] = {q0[l], q0[L + l], q0[2 * L + l]}, d[3] = {q1[l], q1[L + l], q1[2 * L + l]};
+      ASSERT_NEAR(lanes[l], segmentDistance(a, b, c, d), 1e-15) << "trial " << trial << " lane " << l;
+    }
+  }
+}
+
 TEST(ConvexDistance, SphereGapsAreExactForEveryKind) {
   const double identity[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
   const ConvexPart cylinder = cylinderPart(identity, 0.1, 0.2);

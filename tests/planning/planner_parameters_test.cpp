@@ -18,6 +18,7 @@ TEST(PlannerParameters, DefaultsAreTable3) {
   EXPECT_EQ(pmd.neighbourThresholdFactor, 2.0) << "twice d(c_ini, c_goal): see planner_parameters.hpp";
   EXPECT_EQ(pmd.armTrials, 10);
   EXPECT_EQ(pmd.handTrials, 10);
+  EXPECT_EQ(pmd.minSweepVisits, 10u) << "n_A: see planner_parameters.hpp";
   EXPECT_GE(pmd.maxSamples, 1'000'000u) << "N large: the time limit is the real bound";
   EXPECT_NO_THROW(pmd.check());
 
@@ -56,6 +57,9 @@ TEST(PlannerParameters, OutOfRangeValuesNameTheirOption) {
   p = {};
   p.handTrials = -1;
   expectRejected(p, "hand-trials");
+  p = {};
+  p.minSweepVisits = 0;
+  expectRejected(p, "sweep-visits");
   p = {};
   p.maxSamples = 0;
   expectRejected(p, "max-samples");

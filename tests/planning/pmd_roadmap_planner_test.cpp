@@ -216,14 +216,16 @@ TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheSampleLimit) {
   EXPECT_GT(run.planner.statistics().finalArmHalfSize, 0.001);
 }
 
-/// Start and goal free, every arm draw in self-collision: sweeps stay cheap and never narrow.
-class ArmNeverFree : public StateValidator {
+/// The same answer for every state and for every arm.
+class FixedAnswers : public StateValidator {
 public:
-  bool isValid(const Configuration&) override { return ++checks_, true; }
-  bool isArmValid(const Configuration&) override { return ++checks_, false; }
+  FixedAnswers(bool states, bool arms) : states_(states), arms_(arms) {}
+  bool isValid(const Configuration&) override { return ++checks_, states_; }
+  bool isArmValid(const Configuration&) override { return ++checks_, arms_; }
   std::size_t checkCount() const override { return checks_; }
 
 private:
+  bool states_, arms_;
   std::size_t checks_ = 0;
 };
 
@@ -234,7 +236,7 @@ TEST(PmdRoadmapPlanner, ArmBoxesGrowSweepBySweep) {
     PlannerParameters parameters = withSeed(3);
     parameters.armBoxGrowth = growth;
     parameters.maxSamples = 40000;
-    ArmNeverFree stateValidator;
+    FixedAnswers stateValidator(true, false);  // start and goal free, every arm draw in self-collision
     toy::WallMotionValidator motionValidator;
     const SynergyModel model = toy::synergyModel();
     PmdRoadmapPlanner planner(toy::space(), stateValidator, motionValidator,
@@ -264,6 +266,45 @@ TEST(PmdRoadmapPlanner, ArmBoxesGrowSweepBySweep) {
     }
     EXPECT_EQ(planner.statistics().finalArmHalfSize, halfSizes.back());
     EXPECT_EQ(planner.statistics().sweeps, halfSizes.size());
+  }
+}
+
+/// Every motion free except into or out of the goal, which nothing reaches.
+class GoalUnreachable : public MotionValidator {
+public:
+  bool isValid(const Configuration& from, const Configuration& to) override {
+    ++states_;
+    return from != toy::goal() && to != toy::goal();
+  }
+  std::size_t statesChecked() const override { return states_; }
+
+private:
+  std::size_t states_ = 0;
+};
+
+// Once c_ini's component reaches the goal's hypercube, the search range is that hypercube alone:
+// a sweep then passes over it again (while it still adds nodes) until minSweepVisits visits,
+// rather than growing rho_a after one or two.
+TEST(PmdRoadmapPlanner, ANarrowSearchRangeIsPassedOverAgainBeforeRhoGrows) {
+  for (const std::size_t minimum : {std::size_t{1}, std::size_t{10}}) {
+    PlannerParameters parameters = withSeed(5);
+    parameters.minSweepVisits = minimum;
+    parameters.maxSamples = 400;
+    FixedAnswers stateValidator(true, true);
+    GoalUnreachable motionValidator;
+    const SynergyModel model = toy::synergyModel();
+    PmdRoadmapPlanner planner(toy::space(), stateValidator, motionValidator,
+                              makeHandSampler(HandSamplingMode::Synergy, toy::space(), &model), parameters);
+    planner.setStartAndGoal(toy::start(), toy::goal());
+    std::vector<std::size_t> visits;
+    planner.setProgressCallback([&](const PlannerProgress& progress) {
+      if (progress.sweep > visits.size()) visits.push_back(0);
+      ++visits.back();
+    });
+    EXPECT_EQ(planner.solve(), PlannerStatus::SampleLimit);
+    ASSERT_GE(visits.size(), 4u);
+    // Sweep 1 visits c_ini's and c_goal's hypercubes, and the range is [1, 1] from then on.
+    for (std::size_t k = 1; k + 1 < visits.size(); ++k) EXPECT_EQ(visits[k], minimum == 1 ? 2u : minimum) << "sweep " << k + 1;
   }
 }
 

@@ -16,6 +16,11 @@ namespace pmdplan {
 /// Distance between the segments p0-p1 and q0-q1 (either may be a point).
 double segmentDistance(const double* p0, const double* p1, const double* q0, const double* q1);
 
+/// segmentDistance for kSegmentLanes segment pairs at once, each point given as x[lane], then
+/// y[lane], then z[lane] (12 numbers a point): without branches, in SIMD; equal up to rounding.
+constexpr int kSegmentLanes = 4;
+void segmentDistances(const double* p0, const double* p1, const double* q0, const double* q1, double* distances);
+
 /// Exact distance from the sphere (centre c, radius r) to the part, minus r; <= 0 when they touch.
 double sphereGap(const ConvexPart& part, const double* c, double r);
 /// sphereGap of `count` spheres (centres x, y, z; radii r) into gaps[i], in one vectorised pass.

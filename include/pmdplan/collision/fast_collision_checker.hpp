@@ -120,6 +120,13 @@ private:
   void computeMotionWeights(const RobotModel& model);
   bool decide(const Configuration& q, const double* poses, int stride, int lane, bool armOnly, double* safeDisplacement,
               double* pairGaps = nullptr);
+  /// FCL on the pairs in uncertain_ at q: is q free?
+  bool confirmUncertain(const Configuration& q);
+  /// checkBatch's geometric stages, all lanes at once (fast_batch_screen.cpp).
+  void screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid, double* safe,
+                   double* pairGaps);
+  void placeOuterLanes(const double* poses, int link);
+  void partGapLanes(int linkA, std::size_t partA, int linkB, std::size_t partB, double* gaps) const;
 
   ExactCollisionChecker& exact_;
   double band_;
@@ -162,8 +169,24 @@ private:
   std::vector<double> linkPoses_;  ///< placed links' poses, 12 values each
   std::vector<double> poseScratch_;
   Configuration posed_;  ///< the state poseState last posed
+
   std::vector<Flag> uncertain_;
   LinkPoses exactPoses_;
+
+  // Scratch of screenBatch: numbers as [item][coordinate][lane].
+  struct PartWork {
+    std::size_t pair;
+    int partA, partB;  ///< -1: the end of a pair's part pairs, `gap` what the others left
+    double gap;
+  };
+  std::vector<double> boundLanes_;   ///< link bound centres
+  std::vector<double> selfLaneGaps_; ///< per self pair: the bounds' gap
+  std::vector<double> outerLanes_;   ///< every part's outer capsule ends (6 x lanes)
+  std::vector<char> outerPlaced_;    ///< per link
+  std::vector<double> geometricLanesX_, geometricLanesY_, geometricLanesZ_, geometricLanesR_, obstacleLaneGaps_;
+  double laneSafe_[kLanes] = {};
+  std::vector<PartWork> laneWork_[kLanes];            ///< part pairs left to the exact tests
+  std::vector<std::size_t> laneEnvironment_[kLanes];  ///< link-obstacle pairs left to them
 
   std::size_t checks_ = 0;
   FastCheckStatistics statistics_;

@@ -49,10 +49,9 @@ private:
   std::size_t statesSkipped_ = 0;
   std::vector<long> order_;
   std::vector<double> coarseGaps_;  ///< per coarse state, per pair
-  std::vector<long> certified_;     ///< per pair: the last state its certificate covers
   std::vector<int> bucketHead_, nextInBucket_;  ///< pairs by the state they must be tested at
   std::vector<std::size_t> testing_;
-  Configuration state_;
+  Configuration state_, batch_[FastCollisionChecker::kLanes];
   std::vector<std::pair<std::size_t, long>> covered_;  ///< (pair, last state a coarse state covers)
   std::vector<std::pair<long, long>> byPosition_;  ///< coarse states: (state, coarse index), sorted
 };
