@@ -1,12 +1,13 @@
-// Exact (FCL) against fast (convex parts, FCL only within the band of touching) collision checks, side by side in
-// one run, on two mixes of configurations per task:
-//   plan   - the states a real PMD plan of the task checks (samples and motion-check states,
-//            recorded from one seeded run), the mix that matters for planning time;
+// Exact (FCL) against fast (convex parts, FCL only within the band of touching) collision checks,
+// side by side in one run, on two mixes of configurations per task (the fast checker takes them a
+// batch of four at a time, the exact one by one; times per configuration):
+//   plan   - the states a real PMD plan of the task checks (samples and every state of its
+//            motion checks, recorded from one seeded run);
 //   random - the equivalence test's mix: uniform in the limits, near start/goal, near the straight
 //            start-goal segment (about half of them collide).
-// Then segment checks: SegmentChecker on the exact checker against FastSegmentChecker on short
-// planner-like segments. After the Google Benchmark table, a summary prints the exact/fast ratio
-// of every pair of benchmarks.
+// Then motion checks: SegmentChecker on the exact checker against FastSegmentChecker, on the
+// segments that plan checked ("plan") and on short random ones ("short", 2 to 60 states). After
+// the Google Benchmark table, a summary prints the exact/fast ratio of every pair of benchmarks.
 //
 //   collision_check_bench [--benchmark_min_time=0.2] [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
@@ -76,13 +77,28 @@ struct Segment {
   Configuration from, to;
 };
 
+/// Passes every motion check on and keeps its ends (up to a limit): the planner's own segments.
+class RecordingMotions : public MotionValidator {
+public:
+  explicit RecordingMotions(MotionValidator& inner) : inner_(inner) {}
+  bool isValid(const Configuration& from, const Configuration& to) override {
+    if (recorded.size() < 400) recorded.push_back({from, to});
+    return inner_.isValid(from, to);
+  }
+  std::size_t statesChecked() const override { return inner_.statesChecked(); }
+  std::vector<Segment> recorded;
+
+private:
+  MotionValidator& inner_;
+};
+
 struct TaskData {
   Task task;
   std::unique_ptr<ExactCollisionChecker> exact;    ///< benchmarked alone
   std::unique_ptr<ExactCollisionChecker> confirm;  ///< the fast checker's FCL
   std::unique_ptr<FastCollisionChecker> fast;
   std::vector<Configuration> planStates, randomStates;
-  std::vector<Segment> segments;
+  std::vector<Segment> shortSegments, planSegments;
 };
 
 TaskData& taskData(const std::string& name) {
@@ -100,7 +116,8 @@ TaskData& taskData(const std::string& name) {
   const auto synergies = loadSynergyModel(dataDirectory() / "synergies" / (d.task.robot->name() + "_default.yaml"));
   const PlanningSpace space = planningSpaceFromRobot(*d.task.robot);
   RecordingValidator recorder(*d.fast);
-  SegmentChecker motions(recorder, *d.task.robot);
+  SegmentChecker segmentChecker(recorder, *d.task.robot);
+  RecordingMotions motions(segmentChecker);
   PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   parameters.seed = 1;
   parameters.timeLimit = 60.0;
@@ -108,18 +125,19 @@ TaskData& taskData(const std::string& name) {
   planner.setStartAndGoal(d.task.start, d.task.goal);
   planner.solve();
   d.planStates = std::move(recorder.recorded);
+  d.planSegments = std::move(motions.recorded);
 
   RandomSource random(2026);
   for (int i = 0; i < 3000; ++i) d.randomStates.push_back(randomMixConfiguration(d.task, random, i % 3));
   SweptDistanceBound bound(*d.task.robot);
-  while (d.segments.size() < 300) {
-    const Configuration from = randomMixConfiguration(d.task, random, 1 + static_cast<int>(d.segments.size() % 2));
+  while (d.shortSegments.size() < 300) {
+    const Configuration from = randomMixConfiguration(d.task, random, 1 + static_cast<int>(d.shortSegments.size() % 2));
     Configuration direction(from.size());
     for (int i = 0; i < from.size(); ++i) direction[i] = normal(random);
     const double length = random.uniform(0.002, 0.06);
     const Configuration to = from + direction * (length / bound.bound(from, from + direction));
     if (!d.task.robot->withinLimits(to, 0.0) || !d.exact->isValid(from) || !d.exact->isValid(to)) continue;
-    d.segments.push_back({from, to});
+    d.shortSegments.push_back({from, to});
   }
   return d;
 }
@@ -154,15 +172,16 @@ void checkStates(benchmark::State& state, const std::string& name, bool fast, in
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void checkSegments(benchmark::State& state, const std::string& name, bool fast) {
+void checkSegments(benchmark::State& state, const std::string& name, bool fast, bool planned) {
   auto& d = taskData(name);
+  const auto& segments = planned ? d.planSegments : d.shortSegments;
   SegmentChecker slow(*d.exact, *d.task.robot);
-  FastSegmentChecker batched(*d.fast, *d.task.robot, SegmentChecker::kDefaultTolerance);
-  MotionValidator& motions = fast ? static_cast<MotionValidator&>(batched) : slow;
+  FastSegmentChecker sweeping(*d.fast, *d.task.robot, SegmentChecker::kDefaultTolerance);
+  MotionValidator& motions = fast ? static_cast<MotionValidator&>(sweeping) : slow;
   std::size_t i = 0, free = 0;
   for (auto _ : state) {
-    free += motions.isValid(d.segments[i].from, d.segments[i].to);
-    if (++i == d.segments.size()) i = 0;
+    free += motions.isValid(segments[i].from, segments[i].to);
+    if (++i == segments.size()) i = 0;
   }
   state.counters["states_per_segment"] = static_cast<double>(motions.statesChecked()) / static_cast<double>(state.iterations());
   state.counters["free_share"] = static_cast<double>(free) / static_cast<double>(state.iterations());
@@ -189,10 +208,11 @@ int main(int argc, char** argv) {
         benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/" + (fast ? "fast" : "exact")).c_str(),
                                      [=](benchmark::State& s) { checkStates(s, name, fast, which); })
             ->Unit(benchmark::kMicrosecond);
-    for (const bool fast : {false, true})
-      benchmark::RegisterBenchmark(("segment/" + name + "/" + (fast ? "fast" : "exact")).c_str(),
-                                   [=](benchmark::State& s) { checkSegments(s, name, fast); })
-          ->Unit(benchmark::kMicrosecond);
+    for (const auto& [planned, label] : {std::pair{true, "plan"}, std::pair{false, "short"}})
+      for (const bool fast : {false, true})
+        benchmark::RegisterBenchmark(("segment/" + name + "/" + label + "/" + (fast ? "fast" : "exact")).c_str(),
+                                     [=](benchmark::State& s) { checkSegments(s, name, fast, planned); })
+            ->Unit(benchmark::kMicrosecond);
   }
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

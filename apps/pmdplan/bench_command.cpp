@@ -38,7 +38,7 @@ struct CommandLine {
   std::optional<double> grace;  // unset: max(60 s, time limit)
   std::string checker = "fast";
   double toleranceMm = 1.0;
-  std::string synergies, csv, markdown, omplLog, plot;
+  std::string synergies, csv, markdown, omplLog, plot, journal;
   std::string require;  // planners every run of which must succeed, else exit 1
 };
 
@@ -60,6 +60,7 @@ BenchOptions benchOptions(const CommandLine& c) {
   o.markdown = c.markdown;
   o.omplLog = c.omplLog;
   o.plot = c.plot;
+  o.journal = c.journal;
   checkBenchOptions(o);
   for (const std::string& name : splitList(c.require))
     if (!c.require.empty() && std::find(o.planners.begin(), o.planners.end(), name) == o.planners.end())
@@ -157,6 +158,7 @@ const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seede
   app.add_option("--markdown", c->markdown, "Write the tables as Markdown");
   app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
   app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
+  app.add_option("--journal", c->journal, "Keep finished runs in this folder as they finish; the same command again resumes there");
   return [c] { return run(*c); };
 }};
 

@@ -2,10 +2,12 @@
 
 #include <chrono>
 #include <map>
+#include <optional>
 #include <memory>
 #include <stdexcept>
 
 #include "pmdplan/bench/benchmark_run.hpp"
+#include "pmdplan/bench/campaign_journal.hpp"
 #include "pmdplan/bench/campaign_ranks.hpp"
 #include "pmdplan/bench/forked_run.hpp"
 #include "pmdplan/bench/planner_roster.hpp"
@@ -47,7 +49,8 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options) {
 }
 
 std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
-                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress) {
+                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress,
+                                       CampaignJournal* journal) {
   const std::vector<CampaignJob> jobs = campaignJobs(options);
   std::vector<PlannerEntry> planners;
   for (const auto& name : options.planners) {
@@ -57,6 +60,11 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
   }
   std::vector<RunRecord> records;
   for (const std::size_t index : jobIndices) {
+    if (const RunRecord* done = journal ? journal->find(index) : nullptr) {
+      records.push_back(*done);
+      if (progress) progress(records.size(), jobIndices.size(), records.back());
+      continue;
+    }
     const CampaignJob& job = jobs.at(index);
     TaskBench* bench = inputs.tasks.at(job.task).get();
     const PlannerEntry& planner = planners.at(job.planner);
@@ -77,6 +85,7 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
       // Where the run stopped, so tables and plots show a killed run at its limit, not at zero.
       record->planningTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     }
+    if (journal) journal->append(index, *record);
     records.push_back(*record);
     if (progress) progress(records.size(), jobIndices.size(), records.back());
   }
@@ -87,7 +96,9 @@ std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& 
                                    const CampaignProgress& progress) {
   const std::size_t jobCount = campaignJobs(options).size();
   const std::vector<std::size_t> mine = jobsOfRank(jobCount, ranks.rank(), ranks.size());
-  const std::vector<RunRecord> records = runCampaignJobs(options, inputs, mine, progress);
+  std::optional<CampaignJournal> journal;
+  if (!options.journal.empty()) journal.emplace(options.journal, options, ranks.rank());
+  const std::vector<RunRecord> records = runCampaignJobs(options, inputs, mine, progress, journal ? &*journal : nullptr);
   std::string text;
   for (std::size_t i = 0; i < records.size(); ++i) text += std::to_string(mine[i]) + "\t" + encodeRunRecord(records[i]) + "\n";
   const std::vector<std::string> parts = ranks.gatherToFirst(text);

@@ -94,6 +94,37 @@ TEST(BenchCli, WritesEveryOutputAndTheOmplLogLoadsWhenTheReaderIsInstalled) {
   EXPECT_EQ(std::system(query.c_str()), 0);
 }
 
+// A campaign stopped part way resumes from its journal: the runs it holds are not run again (their
+// rows, timings included, come back as they were), the missing one is, and a journal of another
+// campaign is refused.
+TEST(BenchCli, AJournalledCampaignResumesWhereItStopped) {
+  test::TempDir dir;
+  const auto journal = dir.path() / "journal", first = dir.path() / "first.csv", again = dir.path() / "again.csv";
+  const std::string campaign = "bench can_on_table --planners pmd --runs 3 --time-limit 20 --journal " + quoted(journal);
+  ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(first)).exitCode, 0);
+  const std::string lines = contents(journal / "rank0.tsv");
+  ASSERT_EQ(std::count(lines.begin(), lines.end(), '\n'), 4) << lines;  // the campaign's line, then 3 runs
+  ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(again)).exitCode, 0);
+  EXPECT_EQ(contents(again), contents(first)) << "every run came from the journal";
+
+  // Drop run 1 (and cut the next line short, as a crash would): those two are run again.
+  std::istringstream in(lines);
+  std::string header, run0, run1, run2;
+  std::getline(in, header), std::getline(in, run0), std::getline(in, run1), std::getline(in, run2);
+  dir.write("journal/rank0.tsv", header + "\n" + run0 + "\n" + run2.substr(0, run2.size() / 2));
+  const auto resumed = dir.path() / "resumed.csv";
+  ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(resumed)).exitCode, 0);
+  EXPECT_EQ(withoutTimings(contents(resumed)), withoutTimings(contents(first)));
+  std::istringstream rows(contents(resumed)), firstRows(contents(first));
+  std::string row, firstRow;
+  std::getline(rows, row), std::getline(firstRows, firstRow);  // headers
+  std::getline(rows, row), std::getline(firstRows, firstRow);
+  EXPECT_EQ(row, firstRow) << "run 0 was kept, timing and all";
+
+  expectBadInput("bench can_on_table --planners pmd --runs 4 --time-limit 20 --journal " + quoted(journal), "--journal",
+                 "belongs to another campaign");
+}
+
 #ifdef PMDPLAN_MPIEXEC
 TEST(BenchCli, TwoMpiRanksGiveTheOneProcessCsvTimingsAside) {
   test::TempDir dir;

@@ -30,6 +30,9 @@ struct BenchOptions {
   std::filesystem::path synergies;
   /// Outputs (empty: not written).
   std::filesystem::path csv, markdown, omplLog, plot;
+  /// A folder where finished runs are kept as they finish (campaign_journal.hpp); a campaign
+  /// started again with the same folder skips them. Empty: no journal.
+  std::filesystem::path journal;
 };
 
 /// Throws InputError (no file; field named like the command-line option, e.g. "--runs",

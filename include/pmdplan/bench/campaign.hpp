@@ -16,6 +16,7 @@
 
 namespace pmdplan {
 
+class CampaignJournal;
 class CampaignRanks;
 
 struct CampaignJob {
@@ -46,12 +47,14 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options);
 /// Runs the jobs `jobIndices` (indices into campaignJobs(options)), each in a forked child that is
 /// killed after time limit + grace. Records come back in the order of `jobIndices`; a crashed,
 /// killed or failing child gives a record with solved = false, the reason in `failure` and the
-/// child's wall-clock time as its planning time.
+/// child's wall-clock time as its planning time. With a journal, jobs it holds are not run again
+/// and every job run is added to it.
 std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
-                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress = {});
+                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress = {},
+                                       CampaignJournal* journal = nullptr);
 
-/// The whole campaign on every rank of `ranks`: rank 0 returns all records in job order, the other
-/// ranks return nothing.
+/// The whole campaign on every rank of `ranks` (with options.journal, resumed from it): rank 0
+/// returns all records in job order, the other ranks return nothing.
 std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, const CampaignRanks& ranks,
                                    const CampaignProgress& progress = {});
 
