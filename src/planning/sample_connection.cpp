@@ -1,6 +1,7 @@
 #include "pmdplan/planning/sample_connection.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace pmdplan {
@@ -14,9 +15,16 @@ std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, st
                                       double threshold) {
   std::vector<Candidate> candidates;
   candidates.reserve(roadmap.nodeCount());
+  // One pass over the nodes' coordinates side by side (Roadmap::distance's arithmetic).
+  const std::size_t dimension = roadmap.dimension();
+  const double* units = roadmap.units();
+  const double* u = units + node * dimension;
   for (NodeIndex other = 0; other < roadmap.nodeCount(); ++other) {
     if (other == node) continue;
-    const double d = roadmap.distance(node, other);
+    const double* v = units + other * dimension;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < dimension; ++i) sum += (u[i] - v[i]) * (u[i] - v[i]);
+    const double d = std::sqrt(sum);
     if (d <= threshold) candidates.emplace_back(d, other);
   }
   const std::size_t kept = std::min(count, candidates.size());

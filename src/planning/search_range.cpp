@@ -5,13 +5,8 @@
 namespace pmdplan {
 
 SearchRange updateSearchRange(const Roadmap& roadmap, NodeIndex start, NodeIndex goal) {
-  double dIni = roadmap.node(start).step;
-  double dGoal = roadmap.node(goal).step;
-  for (NodeIndex i = 0; i < roadmap.nodeCount(); ++i) {
-    const double step = roadmap.node(i).step;
-    if (roadmap.sameComponent(i, start)) dIni = std::max(dIni, step);
-    if (roadmap.sameComponent(i, goal)) dGoal = std::min(dGoal, step);
-  }
+  double dIni = roadmap.largestStep(start);
+  double dGoal = roadmap.smallestStep(goal);
   if (dIni > dGoal) std::swap(dIni, dGoal);
   return {dIni, dGoal};
 }

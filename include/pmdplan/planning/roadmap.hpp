@@ -36,6 +36,9 @@ public:
 
   bool sameComponent(NodeIndex a, NodeIndex b) const { return components_.same(a, b); }
   std::size_t componentCount() const { return components_.setCount(); }
+  /// The smallest and the largest step of the nodes in i's component (kept as edges join them).
+  double smallestStep(NodeIndex i) const { return smallestStep_[components_.find(i)]; }
+  double largestStep(NodeIndex i) const { return largestStep_[components_.find(i)]; }
 
   std::size_t nodeCount() const { return nodes_.size(); }
   std::size_t edgeCount() const { return edgeCount_; }
@@ -43,13 +46,19 @@ public:
   const std::vector<RoadmapEdge>& edges(NodeIndex i) const { return adjacency_[i]; }
   /// Normalised distance between two nodes.
   double distance(NodeIndex a, NodeIndex b) const;
+  /// The normalised coordinates of every node, node after node (dimension() values each).
+  const double* units() const { return units_.data(); }
+  std::size_t dimension() const { return dimension_; }
 
   void clear();
 
 private:
   std::vector<RoadmapNode> nodes_;
+  std::vector<double> units_;  ///< the nodes' `unit` side by side, for scans over all of them
+  std::size_t dimension_ = 0;
   std::vector<std::vector<RoadmapEdge>> adjacency_;
   DisjointSets components_;
+  std::vector<double> smallestStep_, largestStep_;  ///< by component representative
   std::size_t edgeCount_ = 0;
 };
 
