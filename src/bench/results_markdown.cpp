@@ -1,5 +1,6 @@
 #include "pmdplan/bench/results_markdown.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -37,6 +38,64 @@ struct MetricRow {
   std::function<const MetricSummary&(const RunSummary&)> metric;
 };
 
+/// A median planning time in milliseconds, three significant digits, with the successes.
+std::string timeCell(const RunSummary& s) {
+  if (s.planningTime.count == 0) return "– (" + std::to_string(s.succeeded) + "/" + std::to_string(s.runs) + ")";
+  const double ms = 1e3 * s.planningTime.median;
+  char text[64];
+  std::snprintf(text, sizeof text, ms >= 100.0 ? "%.0f ms (%zu/%zu)" : ms >= 10.0 ? "%.1f ms (%zu/%zu)" : "%.2f ms (%zu/%zu)", ms,
+                s.succeeded, s.runs);
+  return text;
+}
+
+std::string ratioCell(const RunSummary& other, const RunSummary& pmd) {
+  if (other.planningTime.count == 0 || pmd.planningTime.count == 0) return "–";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", other.planningTime.median / pmd.planningTime.median);
+  return text;
+}
+
+/// The OMPL planner a user would pick for the task: the most successes, then the lowest median.
+const RunSummary* bestOmpl(const std::vector<RunSummary>& summaries) {
+  const RunSummary* best = nullptr;
+  for (const RunSummary& s : summaries) {
+    if (s.planner.rfind("ompl:", 0) != 0 || s.succeeded == 0) continue;
+    if (!best || s.succeeded > best->succeeded ||
+        (s.succeeded == best->succeeded && s.planningTime.median < best->planningTime.median))
+      best = &s;
+  }
+  return best;
+}
+
+/// Median planning time of every planner on every task, and how pmd compares (a ratio above 1:
+/// pmd is faster). Only with pmd among the planners.
+std::string summaryMarkdown(const std::vector<std::vector<RunSummary>>& byTask, const std::vector<std::string>& planners) {
+  const auto at = [&](const std::string& name) { return std::find(planners.begin(), planners.end(), name) - planners.begin(); };
+  const auto pmd = static_cast<std::size_t>(at("pmd")), full = static_cast<std::size_t>(at("full"));
+  if (pmd == planners.size()) return "";
+  const bool withOmpl = std::any_of(planners.begin(), planners.end(), [](const std::string& p) { return p.rfind("ompl:", 0) == 0; });
+  std::string md = "### Summary: median planning time of the successful runs (successes/runs)\n\n| task |";
+  for (const std::string& planner : planners) md += " " + planner + " |";
+  if (full < planners.size()) md += " full / pmd |";
+  if (withOmpl) md += " best OMPL planner | best OMPL / pmd |";
+  md += "\n|---|";
+  for (std::size_t i = 0; i < planners.size() + (full < planners.size()) + 2 * withOmpl; ++i) md += "---|";
+  md += "\n";
+  for (const auto& summaries : byTask) {
+    md += "| " + summaries.front().task + " |";
+    for (const RunSummary& s : summaries) md += " " + timeCell(s) + " |";
+    if (full < planners.size()) md += " " + ratioCell(summaries[full], summaries[pmd]) + " |";
+    if (withOmpl) {
+      const RunSummary* best = bestOmpl(summaries);
+      md += best ? " " + best->planner.substr(5) + " | " + ratioCell(*best, summaries[pmd]) + " |" : " none solved | – |";
+    }
+    md += "\n";
+  }
+  md += "\nRatios: the other planner's median over pmd's (above 1: pmd is faster). Best OMPL planner: the one with the "
+        "most successes on the task, then the lowest median.\n\n";
+  return md;
+}
+
 }  // namespace
 
 std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vector<std::string>& tasks,
@@ -53,10 +112,15 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
       {"synergy-subspace distance, max", [](const RunSummary& s) -> const MetricSummary& { return s.subspaceDistanceMax; }},
       {"Mahalanobis distance, mean", [](const RunSummary& s) -> const MetricSummary& { return s.mahalanobisMean; }},
   };
-  std::string md;
+  std::vector<std::vector<RunSummary>> byTask;
   for (const std::string& task : tasks) {
-    std::vector<RunSummary> summaries;
-    for (const std::string& planner : planners) summaries.push_back(summariseRuns(records, task, planner));
+    byTask.emplace_back();
+    for (const std::string& planner : planners) byTask.back().push_back(summariseRuns(records, task, planner));
+  }
+  std::string md = summaryMarkdown(byTask, planners);
+  for (std::size_t t = 0; t < tasks.size(); ++t) {
+    const std::string& task = tasks[t];
+    const std::vector<RunSummary>& summaries = byTask[t];
     md += "### " + task + "\n\n| metric |";
     for (const std::string& planner : planners) md += " " + planner + " |";
     md += "\n|---|";

@@ -1,7 +1,9 @@
 #pragma once
 // The campaign as Markdown, laid out like the paper's Tables 2 and 4: rows are the metrics,
 // columns the planners, one table per task. Each cell is "mean (median)" over the successful
-// runs (solved and valid), the first row the success rate over all runs.
+// runs (solved and valid), the first row the success rate over all runs. With pmd among the
+// planners, a summary comes first: every planner's median planning time per task, full / pmd and
+// the best OMPL planner over pmd.
 #include <string>
 #include <vector>
 
