@@ -10,6 +10,9 @@
 #include <cstdio>
 
 #include "collision/task_configurations.hpp"
+#include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/data_directory.hpp"
+#include "support/temp_dir.hpp"
 
 namespace pmdplan {
 namespace {
@@ -91,6 +94,40 @@ TEST(FastCollisionChecker, EqualsTheExactCheckerOnRandomConfigurationsOfEveryTas
   EXPECT_GT(total - colliding, total / 10);
   // FCL is the exception: almost every configuration is decided by the geometric stages.
   EXPECT_LT(uncertain, total / 100);
+}
+
+// A mesh obstacle stands in the broad phase as its bounding box, which proves "apart" only: near
+// it, FCL on the triangles decides. Here a tetrahedron 8 cm across beside the goal can.
+TEST(FastCollisionChecker, NearAMeshItGivesFclsAnswerToo) {
+  test::TempDir dir;
+  dir.write("tetra.stl", "solid t\n"
+                         "facet normal 0 0 -1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n vertex 0 1 0\n endloop\nendfacet\n"
+                         "facet normal 0 -1 0\n outer loop\n vertex 0 0 0\n vertex 0 0 1\n vertex 1 0 0\n endloop\nendfacet\n"
+                         "facet normal -1 0 0\n outer loop\n vertex 0 0 0\n vertex 0 1 0\n vertex 0 0 1\n endloop\nendfacet\n"
+                         "facet normal 1 1 1\n outer loop\n vertex 1 0 0\n vertex 0 0 1\n vertex 0 1 0\n endloop\nendfacet\n"
+                         "endsolid t\n");
+  std::string text = readTextFile(dataDirectory() / "scenes" / "can_on_table.yaml");
+  const std::string marker = "obstacles:\n";
+  text.insert(text.find(marker) + marker.size(),
+              "  - {name: tetra, mesh: {file: tetra.stl, scale: [0.08, 0.08, 0.08]}, xyz: [-0.44, 1.04, 0.50]}\n");
+  const Task task = loadTask(dir.write("with_mesh.yaml", text));
+  ExactCollisionChecker exact(task), reference(task);
+  FastCollisionChecker fast(task, exact);
+  RandomSource random(5);
+  std::size_t nearMesh = 0, colliding = 0;
+  const std::size_t tetra = 0;  // listed first
+  ASSERT_EQ(task.obstacles[tetra].name, "tetra");
+  for (int s = 0; s < 4000; ++s) {
+    const Configuration q = testing::taskConfiguration(task, random, 1 + s % 2, 0.03);
+    const CollisionReport report = reference.check(q);
+    ASSERT_EQ(fast.isValid(q), report.free()) << "sample " << s;
+    const ScreenResult screen = fast.screen(q);
+    for (const auto& [link, obstacle] : screen.overlappingObstacle) ASSERT_NE(obstacle, tetra) << "a mesh's box proves nothing";
+    for (const auto& [link, obstacle] : screen.uncertainObstacle) nearMesh += obstacle == tetra;
+    colliding += !report.free();
+  }
+  EXPECT_GT(nearMesh, 20u) << "the test must bring the hand near the mesh";
+  EXPECT_GT(colliding, 100u);
 }
 
 // checkBatch runs its own broad phase and capsule tests over the lanes: its answers equal the
