@@ -1,8 +1,9 @@
 // `pmdplan bench [TASK...]`: planners side by side on the same tasks with the same checks: every
 // run's CSV row, the Markdown tables (also printed), an OMPL benchmark log and a box plot of the
 // planning times. Under `mpirun -np P` the runs are split across the ranks and rank 0 writes the
-// outputs. Exit 0 done (whatever the runs' outcomes unless --require), 1 a --require planner
-// failed a run, 2 bad input.
+// outputs; with --report nothing is run and they are written from a journal's finished runs.
+// Exit 0 done (whatever the runs' outcomes unless --require), 1 a --require planner failed a run,
+// 2 bad input.
 #include <unistd.h>
 
 #include <algorithm>
@@ -40,6 +41,7 @@ struct CommandLine {
   double toleranceMm = 1.0;
   std::string synergies, csv, markdown, omplLog, plot, journal;
   std::string require;  // planners every run of which must succeed, else exit 1
+  bool report = false;
 };
 
 BenchOptions benchOptions(const CommandLine& c) {
@@ -61,6 +63,7 @@ BenchOptions benchOptions(const CommandLine& c) {
   o.omplLog = c.omplLog;
   o.plot = c.plot;
   o.journal = c.journal;
+  o.reportOnly = c.report;
   checkBenchOptions(o);
   for (const std::string& name : splitList(c.require))
     if (!c.require.empty() && std::find(o.planners.begin(), o.planners.end(), name) == o.planners.end())
@@ -111,10 +114,27 @@ void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNam
   }
 }
 
+/// --report: the outputs of the journal's finished runs, nothing run.
+int report(const BenchOptions& o, const CampaignInputs& inputs) {
+  const auto records = finishedCampaignRecords(o);
+  const std::size_t jobs = campaignJobs(o).size();
+  std::vector<std::string> taskNames;
+  for (const auto& bench : inputs.tasks) taskNames.push_back(bench->task().name);
+  const std::string markdown = "**Partial campaign: " + std::to_string(records.size()) + " of " + std::to_string(jobs) +
+                               " runs finished** (the journal as of " + utcNow() +
+                               "); success counts are over the finished runs.\n\n" + benchMarkdown(records, taskNames, o.planners);
+  double runSeconds = 0.0;
+  for (const RunRecord& r : records) runSeconds += r.planningTimeSeconds + r.smoothingTimeSeconds;
+  writeOutputs(o, taskNames, records, markdown, utcNow(), runSeconds, 1);
+  std::cout << markdown;
+  return 0;
+}
+
 int run(const CommandLine& c) {
   const BenchOptions o = benchOptions(c);
   const CampaignRanks ranks;
   CampaignInputs inputs = loadCampaignInputs(o);
+  if (o.reportOnly) return ranks.first() ? report(o, inputs) : 0;
   const std::string started = utcNow();
   const auto began = std::chrono::steady_clock::now();
   ProgressLine progress(ranks.size() > 1 ? "bench (rank 0 of " + std::to_string(ranks.size()) + ")" : "bench");
@@ -159,6 +179,7 @@ const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seede
   app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
   app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
   app.add_option("--journal", c->journal, "Keep finished runs in this folder as they finish; the same command again resumes there");
+  app.add_flag("--report", c->report, "Run nothing: write the outputs from the --journal's finished runs (a campaign part way)");
   return [c] { return run(*c); };
 }};
 

@@ -1,7 +1,9 @@
 #include "pmdplan/bench/bench_options.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <set>
+#include <utility>
 
 #include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/core/input_error.hpp"
@@ -27,6 +29,17 @@ void checkBenchOptions(const BenchOptions& o) {
     throw InputError("", "--grace", "expected a non-negative, finite number of seconds");
   if (!(o.toleranceMetres > 0.0) || !std::isfinite(o.toleranceMetres))
     throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  // An output is written when the campaign ends, hours later perhaps: its folder must exist now.
+  const std::pair<const std::filesystem::path*, const char*> outputs[] = {
+      {&o.csv, "--csv"}, {&o.markdown, "--markdown"}, {&o.omplLog, "--ompl-log"}, {&o.plot, "--plot"}};
+  for (const auto& [path, field] : outputs) {
+    if (path->empty()) continue;
+    const std::filesystem::path folder = path->has_parent_path() ? path->parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(folder))
+      throw InputError(path->string(), field, "its folder '" + folder.string() + "' does not exist; expected a file in an existing folder");
+  }
+  if (o.reportOnly && o.journal.empty())
+    throw InputError("", "--report", "needs --journal DIR, the folder of the campaign whose finished runs to report");
 }
 
 std::vector<std::string> splitList(const std::string& text) {

@@ -92,6 +92,18 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
   return records;
 }
 
+std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options) {
+  const std::size_t jobCount = campaignJobs(options).size();
+  std::vector<RunRecord> records;
+  for (auto& [index, record] : CampaignJournal::finishedJobs(options.journal, options)) {
+    if (index >= jobCount)
+      throw InputError(options.journal.string(), "--journal",
+                       "holds job " + std::to_string(index) + " but the campaign has " + std::to_string(jobCount) + " jobs");
+    records.push_back(std::move(record));
+  }
+  return records;
+}
+
 std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, const CampaignRanks& ranks,
                                    const CampaignProgress& progress) {
   const std::size_t jobCount = campaignJobs(options).size();

@@ -32,11 +32,11 @@ std::string CampaignJournal::header(const BenchOptions& o) {
   return text.str();
 }
 
-CampaignJournal::CampaignJournal(const std::filesystem::path& folder, const BenchOptions& options, int rank)
-    : file_(folder / ("rank" + std::to_string(rank) + ".tsv")), header_(header(options)) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) throw InputError(folder.string(), "--journal", "cannot create the journal folder: " + error.message());
+std::map<std::size_t, RunRecord> CampaignJournal::finishedJobs(const std::filesystem::path& folder, const BenchOptions& options) {
+  if (!std::filesystem::is_directory(folder))
+    throw InputError(folder.string(), "--journal", "no such journal folder; expected the folder of a campaign started with --journal");
+  const std::string expected = header(options);
+  std::map<std::size_t, RunRecord> records;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     const auto name = entry.path().filename().string();
     if (name.rfind("rank", 0) != 0 || entry.path().extension() != ".tsv") continue;
@@ -48,18 +48,27 @@ CampaignJournal::CampaignJournal(const std::filesystem::path& folder, const Benc
     for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
       const std::string line = text.substr(start, end - start);
       if (start == 0) {
-        if (line != header_)
+        if (line != expected)
           throw InputError(entry.path().string(), "--journal",
-                           "belongs to another campaign (" + line + "); expected '" + header_ + "': use another folder or remove it");
+                           "belongs to another campaign (" + line + "); expected '" + expected + "': use another folder or remove it");
         continue;
       }
       const std::size_t tab = line.find('\t');
       const auto record = tab == std::string::npos ? std::nullopt : decodeRunRecord(line.substr(tab + 1));
       if (!record || line.find_first_not_of("0123456789") != tab)
         throw InputError(entry.path().string(), "--journal", "a line is not a job index and a run record");
-      records_[std::stoul(line.substr(0, tab))] = *record;
+      records[std::stoul(line.substr(0, tab))] = *record;
     }
   }
+  return records;
+}
+
+CampaignJournal::CampaignJournal(const std::filesystem::path& folder, const BenchOptions& options, int rank)
+    : file_(folder / ("rank" + std::to_string(rank) + ".tsv")), header_(header(options)) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw InputError(folder.string(), "--journal", "cannot create the journal folder: " + error.message());
+  records_ = finishedJobs(folder, options);
   if (!std::filesystem::exists(file_) || std::filesystem::file_size(file_) == 0) {
     std::ofstream out(file_, std::ios::app);
     out << header_ << '\n';

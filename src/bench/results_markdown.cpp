@@ -28,9 +28,17 @@ std::string cell(const MetricSummary& m) {
 }
 
 std::string successCell(const RunSummary& s) {
+  if (s.runs == 0) return "no runs";
   char text[64];
   std::snprintf(text, sizeof text, "%zu/%zu (%.0f %%)", s.succeeded, s.runs, 100.0 * s.successRate());
   return text;
+}
+
+/// Appends " text |" (in pieces: GCC 12 warns falsely about `" " + text + " |"` here, bug 105329).
+void addCell(std::string& md, const std::string& text) {
+  md += ' ';
+  md += text;
+  md += " |";
 }
 
 struct MetricRow {
@@ -75,7 +83,7 @@ std::string summaryMarkdown(const std::vector<std::vector<RunSummary>>& byTask, 
   if (pmd == planners.size()) return "";
   const bool withOmpl = std::any_of(planners.begin(), planners.end(), [](const std::string& p) { return p.rfind("ompl:", 0) == 0; });
   std::string md = "### Summary: median planning time of the successful runs (successes/runs)\n\n| task |";
-  for (const std::string& planner : planners) md += " " + planner + " |";
+  for (const std::string& planner : planners) addCell(md, planner);
   if (full < planners.size()) md += " full / pmd |";
   if (withOmpl) md += " best OMPL planner | best OMPL / pmd |";
   md += "\n|---|";
@@ -83,11 +91,17 @@ std::string summaryMarkdown(const std::vector<std::vector<RunSummary>>& byTask, 
   md += "\n";
   for (const auto& summaries : byTask) {
     md += "| " + summaries.front().task + " |";
-    for (const RunSummary& s : summaries) md += " " + timeCell(s) + " |";
-    if (full < planners.size()) md += " " + ratioCell(summaries[full], summaries[pmd]) + " |";
+    for (const RunSummary& s : summaries) addCell(md, timeCell(s));
+    if (full < planners.size()) addCell(md, ratioCell(summaries[full], summaries[pmd]));
     if (withOmpl) {
-      const RunSummary* best = bestOmpl(summaries);
-      md += best ? " " + best->planner.substr(5) + " | " + ratioCell(*best, summaries[pmd]) + " |" : " none solved | – |";
+      const bool ran = std::any_of(summaries.begin(), summaries.end(),
+                                   [](const RunSummary& s) { return s.planner.rfind("ompl:", 0) == 0 && s.runs > 0; });
+      if (const RunSummary* best = bestOmpl(summaries)) {
+        addCell(md, best->planner.substr(5));
+        addCell(md, ratioCell(*best, summaries[pmd]));
+      } else {
+        md += ran ? " none solved | – |" : " no runs | – |";
+      }
     }
     md += "\n";
   }
@@ -122,15 +136,15 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
     const std::string& task = tasks[t];
     const std::vector<RunSummary>& summaries = byTask[t];
     md += "### " + task + "\n\n| metric |";
-    for (const std::string& planner : planners) md += " " + planner + " |";
+    for (const std::string& planner : planners) addCell(md, planner);
     md += "\n|---|";
     for (std::size_t i = 0; i < planners.size(); ++i) md += "---|";
     md += "\n| success (solved and valid) |";
-    for (const RunSummary& s : summaries) md += " " + successCell(s) + " |";
+    for (const RunSummary& s : summaries) addCell(md, successCell(s));
     md += "\n";
     for (const MetricRow& row : rows) {
       md += std::string("| ") + row.label + " |";
-      for (const RunSummary& s : summaries) md += " " + cell(row.metric(s)) + " |";
+      for (const RunSummary& s : summaries) addCell(md, cell(row.metric(s)));
       md += "\n";
     }
     md += "\n";

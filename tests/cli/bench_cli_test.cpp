@@ -53,6 +53,13 @@ TEST(BenchCli, ZeroOrNegativeRunsAreBadInput) {
   expectBadInput("bench can_on_table --runs -2", "--runs", ">= 1");
 }
 
+// Checked before the first run, not when a long campaign ends and writes its outputs.
+TEST(BenchCli, AnOutputInAMissingFolderIsBadInputBeforeAnyRun) {
+  for (const std::string option : {"--csv", "--markdown", "--ompl-log", "--plot"})
+    expectBadInput("bench can_on_table --runs 1 " + option + " /no/such/folder/out", option,
+                   "its folder '/no/such/folder' does not exist");
+}
+
 TEST(BenchCli, AMissingTaskIsBadInput) {
   const auto result = runCli("bench can_on_table no_such_task --runs 1");
   EXPECT_EQ(result.exitCode, 2) << result.out << result.err;
@@ -123,6 +130,38 @@ TEST(BenchCli, AJournalledCampaignResumesWhereItStopped) {
 
   expectBadInput("bench can_on_table --planners pmd --runs 4 --time-limit 20 --journal " + quoted(journal), "--journal",
                  "belongs to another campaign");
+}
+
+// --report writes the outputs of a journal's finished runs without running the others: the rows
+// are the journal's, the tables say how much is finished, and the journal is left as it was.
+TEST(BenchCli, AReportShowsAJournalsFinishedRunsAndRunsNothing) {
+  test::TempDir dir;
+  const auto journal = dir.path() / "journal", full = dir.path() / "full.csv";
+  const std::string campaign = "bench can_on_table --planners pmd,full --runs 2 --time-limit 20 --journal " + quoted(journal);
+  ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(full)).exitCode, 0);
+  std::istringstream in(contents(journal / "rank0.tsv"));
+  std::string header, run0, run1, run2;
+  std::getline(in, header), std::getline(in, run0), std::getline(in, run1), std::getline(in, run2);
+  dir.write("journal/rank0.tsv", header + "\n" + run0 + "\n" + run2 + "\n");  // pmd run 0 and full run 0
+  const std::string before = contents(journal / "rank0.tsv");
+
+  const auto csv = dir.path() / "part.csv", markdown = dir.path() / "part.md", plot = dir.path() / "part.svg";
+  const auto result =
+      runCli(dir, campaign + " --report --csv " + quoted(csv) + " --markdown " + quoted(markdown) + " --plot " + quoted(plot));
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(contents(journal / "rank0.tsv"), before) << "a report adds nothing to the journal";
+  std::istringstream fullRows(contents(full));
+  std::string fullHeader, pmd0, pmd1, full0, full1;
+  std::getline(fullRows, fullHeader), std::getline(fullRows, pmd0), std::getline(fullRows, pmd1), std::getline(fullRows, full0);
+  EXPECT_EQ(contents(csv), fullHeader + "\n" + pmd0 + "\n" + full0 + "\n") << "the two finished runs, timings and all";
+  const std::string tables = contents(markdown);
+  EXPECT_NE(tables.find("Partial campaign: 2 of 4 runs finished"), std::string::npos) << tables;
+  EXPECT_NE(tables.find("1/1 (100 %)"), std::string::npos) << tables;
+  EXPECT_NE(contents(plot).find("<svg"), std::string::npos);
+
+  expectBadInput("bench can_on_table --planners pmd --runs 2 --report", "--report", "needs --journal");
+  expectBadInput("bench can_on_table --planners pmd --runs 2 --report --journal " + quoted(dir.path() / "none"), "--journal",
+                 "no such journal folder");
 }
 
 #ifdef PMDPLAN_MPIEXEC

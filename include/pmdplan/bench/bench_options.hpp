@@ -33,12 +33,16 @@ struct BenchOptions {
   /// A folder where finished runs are kept as they finish (campaign_journal.hpp); a campaign
   /// started again with the same folder skips them. Empty: no journal.
   std::filesystem::path journal;
+  /// Run nothing: write the outputs from the journal's finished runs only (a report of a campaign
+  /// part way). Needs a journal.
+  bool reportOnly = false;
 };
 
 /// Throws InputError (no file; field named like the command-line option, e.g. "--runs",
 /// "--planners", "--time-limit", "--tolerance-mm", "TASK") for an empty or unknown planner list,
 /// a repeated planner or task, runs < 1, a time limit that is not a positive finite number, a
-/// tolerance that is not positive, or no task. Tasks themselves are checked when loaded.
+/// tolerance that is not positive, no task, an output (file named, field "--csv", "--markdown",
+/// "--ompl-log", "--plot") whose folder does not exist, or a report ("--report") without a journal. Tasks themselves are checked when loaded.
 void checkBenchOptions(const BenchOptions& options);
 
 /// Splits "a,b,c" at commas (empty items kept, so checkBenchOptions can name them).

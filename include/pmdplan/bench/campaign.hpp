@@ -53,6 +53,10 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
                                        const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress = {},
                                        CampaignJournal* journal = nullptr);
 
+/// The records of the jobs options.journal holds, in job order, nothing run: the report of a
+/// campaign part way. Throws InputError as CampaignJournal::finishedJobs does.
+std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options);
+
 /// The whole campaign on every rank of `ranks` (with options.journal, resumed from it): rank 0
 /// returns all records in job order, the other ranks return nothing.
 std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, const CampaignRanks& ranks,

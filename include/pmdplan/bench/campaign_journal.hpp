@@ -31,6 +31,11 @@ public:
   /// The first line of every file of this campaign's journal.
   static std::string header(const BenchOptions& options);
 
+  /// The finished jobs of the journal in `folder`, read without creating or adding anything (the
+  /// report of a campaign still running). Throws InputError like the constructor, and if the
+  /// folder does not exist.
+  static std::map<std::size_t, RunRecord> finishedJobs(const std::filesystem::path& folder, const BenchOptions& options);
+
 private:
   std::filesystem::path file_;
   std::string header_;
