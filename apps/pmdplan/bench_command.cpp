@@ -114,18 +114,25 @@ void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNam
   }
 }
 
+/// The tasks' own names (a task given as a file is known by the name inside it).
+std::vector<std::string> taskNamesOf(const CampaignInputs& inputs) {
+  std::vector<std::string> names;
+  for (const auto& bench : inputs.tasks) names.push_back(bench->task().name);
+  return names;
+}
+
 /// --report: the outputs of the journal's finished runs, nothing run.
 int report(const BenchOptions& o, const CampaignInputs& inputs) {
   const auto records = finishedCampaignRecords(o);
   const std::size_t jobs = campaignJobs(o).size();
-  std::vector<std::string> taskNames;
-  for (const auto& bench : inputs.tasks) taskNames.push_back(bench->task().name);
+  const std::vector<std::string> taskNames = taskNamesOf(inputs);
+  const std::string now = utcNow();
   const std::string markdown = "**Partial campaign: " + std::to_string(records.size()) + " of " + std::to_string(jobs) +
-                               " runs finished** (the journal as of " + utcNow() +
+                               " runs finished** (the journal as of " + now +
                                "); success counts are over the finished runs.\n\n" + benchMarkdown(records, taskNames, o.planners);
   double runSeconds = 0.0;
   for (const RunRecord& r : records) runSeconds += r.planningTimeSeconds + r.smoothingTimeSeconds;
-  writeOutputs(o, taskNames, records, markdown, utcNow(), runSeconds, 1);
+  writeOutputs(o, taskNames, records, markdown, now, runSeconds, 1);
   std::cout << markdown;
   return 0;
 }
@@ -146,8 +153,7 @@ int run(const CommandLine& c) {
   progress.finish();
   if (!ranks.first()) return 0;
   const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  std::vector<std::string> taskNames;
-  for (const auto& bench : inputs.tasks) taskNames.push_back(bench->task().name);
+  const std::vector<std::string> taskNames = taskNamesOf(inputs);
   const std::string markdown = benchMarkdown(records, taskNames, o.planners);
   writeOutputs(o, taskNames, records, markdown, started, totalSeconds, ranks.size());
   std::cout << markdown;
