@@ -145,10 +145,11 @@ TaskData& taskData(const std::string& name) {
 const std::vector<Configuration>& mix(TaskData& d, int which) { return which == 0 ? d.planStates : d.randomStates; }
 
 // One iteration checks kLanes configurations: the exact checker one by one, the fast checker in one
-// batch (its forward kinematics and broad phase run over all of them at once); times are per
-// configuration.
-void checkStates(benchmark::State& state, const std::string& name, bool fast, int which) {
+// batch (its forward kinematics and geometric stages run over all of them at once, in lane vectors
+// `laneWidth` wide); times are per configuration.
+void checkStates(benchmark::State& state, const std::string& name, bool fast, int which, int laneWidth) {
   auto& d = taskData(name);
+  d.fast->setLaneWidth(laneWidth);
   constexpr int kLanes = FastCollisionChecker::kLanes;
   const auto& states = mix(d, which);
   std::size_t i = 0, valid = 0;
@@ -174,6 +175,7 @@ void checkStates(benchmark::State& state, const std::string& name, bool fast, in
 
 void checkSegments(benchmark::State& state, const std::string& name, bool fast, bool planned) {
   auto& d = taskData(name);
+  d.fast->setLaneWidth(FastCollisionChecker::widestLaneWidth());
   const auto& segments = planned ? d.planSegments : d.shortSegments;
   SegmentChecker slow(*d.exact, *d.task.robot);
   FastSegmentChecker sweeping(*d.fast, *d.task.robot, SegmentChecker::kDefaultTolerance);
@@ -203,11 +205,17 @@ public:
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   for (const auto& name : kTasks) {
-    for (const auto& [which, label] : {std::pair{0, "plan"}, std::pair{1, "random"}})
-      for (const bool fast : {false, true})
-        benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/" + (fast ? "fast" : "exact")).c_str(),
-                                     [=](benchmark::State& s) { checkStates(s, name, fast, which); })
+    // "fast" at the CPU's widest lane vectors, "fast-N" at the narrower widths N it runs too.
+    const int widest = FastCollisionChecker::widestLaneWidth();
+    for (const auto& [which, label] : {std::pair{0, "plan"}, std::pair{1, "random"}}) {
+      benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/exact").c_str(),
+                                   [=](benchmark::State& s) { checkStates(s, name, false, which, widest); })
+          ->Unit(benchmark::kMicrosecond);
+      for (int width = widest; width >= 2; width /= 2)
+        benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/fast" + (width == widest ? "" : "-" + std::to_string(width))).c_str(),
+                                     [=](benchmark::State& s) { checkStates(s, name, true, which, width); })
             ->Unit(benchmark::kMicrosecond);
+    }
     for (const auto& [planned, label] : {std::pair{true, "plan"}, std::pair{false, "short"}})
       for (const bool fast : {false, true})
         benchmark::RegisterBenchmark(("segment/" + name + "/" + label + "/" + (fast ? "fast" : "exact")).c_str(),
@@ -216,14 +224,16 @@ int main(int argc, char** argv) {
   }
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  std::printf("\nexact / fast time ratio (avx2 kernels: %s)\n", BatchedForwardKinematics::usesAvx2() ? "yes" : "no");
+  std::printf("\nexact / fast time ratio (%s kernels)\n", BatchedForwardKinematics::simdLevel());
   for (const auto& [benchmarkName, exactTime] : reporter.times) {
     const auto at = benchmarkName.rfind("/exact");
     if (at == std::string::npos || at + 6 != benchmarkName.size()) continue;
-    const auto fast = reporter.times.find(benchmarkName.substr(0, at) + "/fast");
-    if (fast == reporter.times.end()) continue;
-    std::printf("  %-34s exact %9.2f us  fast %8.2f us  ratio %6.1f\n", benchmarkName.substr(0, at).c_str(), exactTime,
-                fast->second, exactTime / fast->second);
+    const std::string stem = benchmarkName.substr(0, at);
+    for (const auto& [fastName, fastTime] : reporter.times) {
+      if (fastName.rfind(stem + "/fast", 0) != 0) continue;
+      std::printf("  %-34s %-7s exact %9.2f us  fast %8.2f us  ratio %6.1f\n", stem.c_str(), fastName.substr(stem.size() + 1).c_str(), exactTime,
+                  fastTime, exactTime / fastTime);
+    }
   }
   benchmark::Shutdown();
   return 0;

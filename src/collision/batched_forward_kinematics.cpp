@@ -22,8 +22,8 @@ void toPlain(const Eigen::Isometry3d& pose, double* out) {
 }
 
 /// sin and cos of `count` values, in one loop of independent polynomials (it vectorises; built
-/// for AVX2 and the SSE2 baseline, the loader picks one for the running CPU).
-[[gnu::target_clones("avx2", "default")]] void sinCosArray(const double* x, double* s, double* c, int count) {
+/// for AVX-512, AVX2 and the SSE2 baseline, the loader picks one for the running CPU).
+[[gnu::target_clones("avx512f", "avx2", "default")]] void sinCosArray(const double* x, double* s, double* c, int count) {
   for (int i = 0; i < count; ++i) portable::sinCos(x[i], s[i], c[i]);
 }
 
@@ -146,18 +146,29 @@ void batchBaseline(const Plan& plan, const double* q, double* poses, double* scr
 [[gnu::target("avx2")]] void batchAvx2(const Plan& plan, const double* q, double* poses, double* scratch) {
   walk<BatchedForwardKinematics::kLanes>(plan, q, poses, scratch);
 }
+[[gnu::target("avx512f")]] void batchAvx512(const Plan& plan, const double* q, double* poses, double* scratch) {
+  walk<BatchedForwardKinematics::kLanes>(plan, q, poses, scratch);
+}
 
-bool detectAvx2() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2");
+/// The widest kernel the running CPU has, picked once.
+struct BatchDispatch {
+  const char* level;
+  void (*kernel)(const Plan&, const double*, double*, double*);
+};
+
+const BatchDispatch& batchDispatch() {
+  static const BatchDispatch dispatch = [] {
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f")) return BatchDispatch{"avx512", batchAvx512};
+    if (__builtin_cpu_supports("avx2")) return BatchDispatch{"avx2", batchAvx2};
+    return BatchDispatch{"sse2", batchBaseline};
+  }();
+  return dispatch;
 }
 
 }  // namespace
 
-bool BatchedForwardKinematics::usesAvx2() {
-  static const bool avx2 = detectAvx2();
-  return avx2;
-}
+const char* BatchedForwardKinematics::simdLevel() { return batchDispatch().level; }
 
 BatchedForwardKinematics::BatchedForwardKinematics(const RobotModel& model, const Eigen::Isometry3d& base)
     : dof_(model.dof()), linkCount_(static_cast<int>(model.links().size())) {
@@ -203,10 +214,7 @@ BatchedForwardKinematics::BatchedForwardKinematics(const RobotModel& model, cons
 void BatchedForwardKinematics::computeBatch(const double* jointsByLane, double* poses) const {
   thread_local std::vector<double> scratch;
   scratch.resize(3 * static_cast<std::size_t>(plan_.jointCount) * kLanes);
-  if (usesAvx2())
-    batchAvx2(plan_, jointsByLane, poses, scratch.data());
-  else
-    batchBaseline(plan_, jointsByLane, poses, scratch.data());
+  batchDispatch().kernel(plan_, jointsByLane, poses, scratch.data());
 }
 
 void BatchedForwardKinematics::addWithAncestors(LinkSet& set, int link) const {

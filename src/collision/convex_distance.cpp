@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lane_distances.hpp"
+
 namespace pmdplan {
 namespace {
 
@@ -199,37 +201,15 @@ double segmentDistance(const double* p0, const double* p1, const double* q0, con
   return std::sqrt(dot3(d, d));
 }
 
-// Every branch of segmentDistance computed and the right one selected, lane by lane, with the
-// divisions done once as reciprocals: the same closest points up to rounding (a few ulps; the
-// callers' band is twelve orders of magnitude larger).
-[[gnu::target_clones("avx2", "default")]] void segmentDistances(const double* p0, const double* p1, const double* q0,
-                                                                const double* q1, double* distances) {
+// lanes::segmentDistance over plain arrays, four lanes at a time (built for AVX2 and the SSE2
+// baseline; the loader picks one for the running CPU).
+[[gnu::target_clones("avx2", "default")]] void segmentDistances(const double* p0, const double* p1, const double* q0, const double* q1,
+                                                                double* distances) {
+  using V = lanes::Vec<4>;
   constexpr int L = kSegmentLanes;
-  constexpr double kTiny = 1e-24;
-  for (int l = 0; l < L; ++l) {
-    double d1[3], d2[3], r[3];
-    for (int i = 0; i < 3; ++i)
-      d1[i] = p1[i * L + l] - p0[i * L + l], d2[i] = q1[i * L + l] - q0[i * L + l], r[i] = p0[i * L + l] - q0[i * L + l];
-    const double a = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2], e = d2[0] * d2[0] + d2[1] * d2[1] + d2[2] * d2[2];
-    const double f = d2[0] * r[0] + d2[1] * r[1] + d2[2] * r[2], c = d1[0] * r[0] + d1[1] * r[1] + d1[2] * r[2];
-    const double b = d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2];
-    const bool pointP = a <= kTiny, pointQ = e <= kTiny;
-    const double inverseA = 1.0 / (pointP ? 1.0 : a), inverseE = 1.0 / (pointQ ? 1.0 : e);
-    const double denominator = a * e - b * b;
-    const bool skew = denominator > kTiny * (a + e);
-    const double inverseDenominator = 1.0 / (skew ? denominator : 1.0);
-    const double sFree = skew ? std::min(std::max((b * f - c * e) * inverseDenominator, 0.0), 1.0) : 0.0;
-    const double tFree = (b * sFree + f) * inverseE;
-    const double sLow = std::min(std::max(-c * inverseA, 0.0), 1.0), sHigh = std::min(std::max((b - c) * inverseA, 0.0), 1.0);
-    double s = tFree < 0.0 ? sLow : (tFree > 1.0 ? sHigh : sFree);
-    double t = tFree < 0.0 ? 0.0 : (tFree > 1.0 ? 1.0 : tFree);
-    s = pointQ ? sLow : s;
-    t = pointQ ? 0.0 : t;
-    const double tOnly = std::min(std::max(f * inverseE, 0.0), 1.0);
-    t = pointP ? (pointQ ? 0.0 : tOnly) : t;
-    s = pointP ? 0.0 : s;
-    const double x = r[0] + d1[0] * s - d2[0] * t, y = r[1] + d1[1] * s - d2[1] * t, z = r[2] + d1[2] * s - d2[2] * t;
-    distances[l] = std::sqrt(x * x + y * y + z * z);
+  for (int first = 0; first < L; first += 4) {
+    const auto point = [&](const double* p) { return lanes::loadPoint<V>(p + first, L); };
+    lanes::store(distances + first, lanes::segmentDistance(point(p0), point(p1), point(q0), point(q1)));
   }
 }
 
@@ -288,7 +268,7 @@ template <ConvexPart::Kind K>
 
 }  // namespace
 
-// Built twice, for AVX2 and for the SSE2 baseline; the loader picks one for the running CPU.
+// Built for AVX2 and the SSE2 baseline; the loader picks one for the running CPU.
 [[gnu::target_clones("avx2", "default")]] void sphereGaps(const ConvexPart& part, const double* x, const double* y, const double* z,
                                                           const double* r, int count, double* gaps) {
   switch (part.kind) {

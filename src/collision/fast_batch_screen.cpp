@@ -1,66 +1,382 @@
-// FastCollisionChecker::screenBatch: the geometric stages for kLanes configurations at once. Each
-// number of the broad phase and of the parts' outer-capsule tests is an array over the lanes (the
-// poses already come that way from BatchedForwardKinematics), so one SIMD instruction serves all
-// configurations; only the few part pairs the capsules cannot clear go on, lane by lane, to the
-// exact tests of the one-configuration path.
+// FastCollisionChecker::screenBatch: the geometric stages for kLanes configurations at once, on
+// lane vectors (lane_vector.hpp) as wide as the running CPU's: all eight lanes in one AVX-512
+// register, or two passes of four (AVX2), or four of two (SSE2). For every pair: the link bounds;
+// where those meet, the parts' bounding spheres; where those meet, the parts themselves — capsules
+// by their exact distance, boxes and cylinders by separating axes (face normals and cylinder
+// axes). Only a lane whose pair none of these proves apart goes on, alone, to the one-configuration
+// tests (linkPairContact / linkObstacleContact, then FCL).
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
 
+#include "lane_distances.hpp"
 #include "pmdplan/collision/convex_distance.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
 
 namespace pmdplan {
 namespace {
 
+using lanes::Point;
 constexpr int L = FastCollisionChecker::kLanes;
 constexpr int kValues = BatchedForwardKinematics::kPoseValues;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-static_assert(L == kSegmentLanes, "the batched capsule tests run over the kinematics' lanes");
+/// A placed part, [value][lane]: its core's a (or centre) and b, its rotation (row-major), its
+/// bounding sphere's centre, its outer capsule's ends.
+constexpr int kPartAxes = 6, kPartBound = 15, kPartOuter = 18, kPartValues = 24;
 
-/// out = pose * p for every lane; p in the link frame, out as x[lane], y[lane], z[lane].
-void transformLanes(const double* poses, int link, const double* p, double* out) {
-  const double* m = poses + static_cast<std::size_t>(link) * kValues * L;
-  for (int r = 0; r < 3; ++r)
-    for (int l = 0; l < L; ++l) out[r * L + l] = m[(r * 3) * L + l] * p[0] + m[(r * 3 + 1) * L + l] * p[1] + m[(r * 3 + 2) * L + l] * p[2] + m[(9 + r) * L + l];
+template <class V>
+[[gnu::always_inline]] inline Point<V> pointAt(const double* p) {
+  return lanes::loadPoint<V>(p, L);
 }
 
-/// gaps[p * L + lane] = distance between the bound centres of pair p's links minus their radii.
-[[gnu::target_clones("avx2", "default")]] void pairGapLanes(const double* bounds, const int* pairA, const int* pairB,
-                                                            const double* radiusSum, std::size_t count, double* gaps) {
-  for (std::size_t p = 0; p < count; ++p) {
-    const double* ba = bounds + static_cast<std::size_t>(pairA[p]) * 3 * L;
-    const double* bb = bounds + static_cast<std::size_t>(pairB[p]) * 3 * L;
-    for (int l = 0; l < L; ++l) {
-      const double dx = ba[l] - bb[l], dy = ba[L + l] - bb[L + l], dz = ba[2 * L + l] - bb[2 * L + l];
-      gaps[p * L + l] = std::sqrt(dx * dx + dy * dy + dz * dz) - radiusSum[p];
-    }
+template <class V>
+[[gnu::always_inline]] inline void storePoint(double* out, const Point<V>& p) {
+  lanes::store(out, p.x), lanes::store(out + L, p.y), lanes::store(out + 2 * L, p.z);
+}
+
+/// pose * p lane by lane; `m` is a link's pose, [value][lane].
+template <class V>
+[[gnu::always_inline]] inline Point<V> transformed(const double* m, const double* p) {
+  using lanes::load;
+  const auto row = [&](int r) {
+    return load<V>(m + (r * 3) * L) * p[0] + load<V>(m + (r * 3 + 1) * L) * p[1] + load<V>(m + (r * 3 + 2) * L) * p[2] + load<V>(m + (9 + r) * L);
+  };
+  return {row(0), row(1), row(2)};
+}
+
+/// Axis k (a column of the rotation) of a placed part.
+template <class V>
+[[gnu::always_inline]] inline Point<V> axisOf(const double* part, int k) {
+  const double* axes = part + kPartAxes * L;
+  return {lanes::load<V>(axes + k * L), lanes::load<V>(axes + (3 + k) * L), lanes::load<V>(axes + (6 + k) * L)};
+}
+
+/// Centre and half width of a placed part's projection on the unit direction n.
+template <class V>
+[[gnu::always_inline]] inline void project(const ConvexPart& shape, const double* part, const Point<V>& n, V& centre, V& halfWidth) {
+  using lanes::abs;
+  using lanes::dot;
+  const Point<V> a = pointAt<V>(part);
+  if (shape.kind == ConvexPart::Kind::Capsule) {
+    const V pa = dot(n, a), pb = dot(n, pointAt<V>(part + 3 * L));
+    centre = 0.5 * (pa + pb), halfWidth = 0.5 * abs(pb - pa) + shape.radius;
+    return;
   }
+  centre = dot(n, a);
+  if (shape.kind == ConvexPart::Kind::Box) {
+    halfWidth = shape.half[0] * abs(dot(n, axisOf<V>(part, 0))) + shape.half[1] * abs(dot(n, axisOf<V>(part, 1))) +
+                shape.half[2] * abs(dot(n, axisOf<V>(part, 2)));
+  } else {
+    const V w = abs(dot(n, axisOf<V>(part, 2)));
+    halfWidth = shape.half[1] * w + shape.half[0] * lanes::sqrt(lanes::max(lanes::splat<V>(0.0), 1.0 - w * w));
+  }
+}
+
+/// The largest gap between the parts' projections on the face normals of their boxes and the axes
+/// of their cylinders: a lower bound on their distance (separating axes, as faceSeparation). On
+/// its own axes a part's half width is its half extent. Unless `tight`, the second part's axes are
+/// tried only if the first part's leave some lane unproven (a looser bound, proof enough).
+template <class V>
+[[gnu::always_inline]] inline V faceSeparation(const ConvexPart& shapeA, const double* a, const ConvexPart& shapeB, const double* b, double band,
+                                               bool tight) {
+  V best = lanes::splat<V>(-kInfinity);
+  const auto alongAxesOf = [&](const ConvexPart& own, const double* ownLanes, const ConvexPart& other, const double* otherLanes) {
+    if (own.kind == ConvexPart::Kind::Capsule) return;
+    const V ownCentre[3] = {pointAt<V>(ownLanes).x, pointAt<V>(ownLanes).y, pointAt<V>(ownLanes).z};
+    for (int k = own.kind == ConvexPart::Kind::Box ? 0 : 2; k < 3; ++k) {
+      const Point<V> n = axisOf<V>(ownLanes, k);
+      V centre, halfWidth;
+      project(other, otherLanes, n, centre, halfWidth);
+      const V ownHalf = lanes::splat<V>(own.kind == ConvexPart::Kind::Box ? own.half[k] : own.half[1]);
+      best = lanes::max(best, lanes::abs(n.x * ownCentre[0] + n.y * ownCentre[1] + n.z * ownCentre[2] - centre) - ownHalf - halfWidth);
+    }
+  };
+  alongAxesOf(shapeA, a, shapeB, b);
+  if (!tight && shapeA.kind != ConvexPart::Kind::Capsule && !lanes::any(best <= band)) return best;
+  alongAxesOf(shapeB, b, shapeA, a);
+  return best;
+}
+
+/// A lower bound on the gap between two placed parts that are not both capsules: separating axes,
+/// and where those leave a lane unproven and a part is a cylinder, the other part's core (a
+/// capsule's) or outer capsule against that cylinder.
+template <class V>
+[[gnu::always_inline]] inline V solidGap(const ConvexPart& shapeA, const double* a, const ConvexPart& shapeB, const double* b, double band,
+                                         bool tight) {
+  V best = faceSeparation<V>(shapeA, a, shapeB, b, band, tight);
+  const auto againstCylinder = [&](const ConvexPart& other, const double* otherLanes, const ConvexPart& cylinder, const double* cylinderLanes) {
+    if (cylinder.kind != ConvexPart::Kind::Cylinder || (!tight && !lanes::any(best <= band))) return;
+    const bool capsule = other.kind == ConvexPart::Kind::Capsule;
+    const double* ends = capsule ? otherLanes : otherLanes + kPartOuter * L;
+    const V g = lanes::segmentCylinderDistance(pointAt<V>(ends), pointAt<V>(ends + 3 * L), pointAt<V>(cylinderLanes), axisOf<V>(cylinderLanes, 2),
+                                               cylinder.half[0], cylinder.half[1]) -
+                (capsule ? other.radius : other.outerRadius);
+    best = lanes::max(best, g);
+  };
+  againstCylinder(shapeA, a, shapeB, b);
+  againstCylinder(shapeB, b, shapeA, a);
+  return best;
+}
+
+/// sphereGap lane by lane: from spheres (centres c, radius r) to a part fixed in the world; a lower
+/// bound (sqrtBelow).
+template <class V>
+[[gnu::always_inline]] inline V obstacleSphereGap(const ConvexPart& part, const Point<V>& c, V r) {
+  using lanes::abs;
+  using lanes::max;
+  const Point<V> d = {c.x - part.a[0], c.y - part.a[1], c.z - part.a[2]};
+  if (part.kind == ConvexPart::Kind::Capsule) {
+    const double ex = part.b[0] - part.a[0], ey = part.b[1] - part.a[1], ez = part.b[2] - part.a[2];
+    const double length2 = ex * ex + ey * ey + ez * ez, inverse = length2 > 0.0 ? 1.0 / length2 : 0.0;
+    const V t = lanes::clamp01((d.x * ex + d.y * ey + d.z * ez) * inverse);
+    const Point<V> q = {d.x - t * ex, d.y - t * ey, d.z - t * ez};
+    return lanes::sqrtBelow(lanes::dot(q, q)) - (part.radius + r);
+  }
+  const double* m = part.axes;  // local coordinates: the rotation transposed
+  const V u = m[0] * d.x + m[3] * d.y + m[6] * d.z, v = m[1] * d.x + m[4] * d.y + m[7] * d.z, w = m[2] * d.x + m[5] * d.y + m[8] * d.z;
+  const V zero = lanes::splat<V>(0.0);
+  if (part.kind == ConvexPart::Kind::Box) {
+    const V ou = max(abs(u) - part.half[0], zero), ov = max(abs(v) - part.half[1], zero), ow = max(abs(w) - part.half[2], zero);
+    return lanes::sqrtBelow(ou * ou + ov * ov + ow * ow) - r;
+  }
+  const V radial = max(lanes::sqrt(u * u + v * v) - part.half[0], zero), axial = max(abs(w) - part.half[1], zero);
+  return lanes::sqrtBelow(radial * radial + axial * axial) - r;
 }
 
 }  // namespace
 
-void FastCollisionChecker::placeOuterLanes(const double* poses, int link) {
-  const auto l = static_cast<std::size_t>(link);
-  if (outerPlaced_[l]) return;
-  const auto& parts = links_[l].parts;
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    double* out = outerLanes_.data() + (static_cast<std::size_t>(partOffset_[l]) + i) * 6 * L;
-    transformLanes(poses, link, parts[i].outerA, out);
-    transformLanes(poses, link, parts[i].outerB, out + 3 * L);
+void FastCollisionChecker::prepareLanes() {
+  const std::size_t obstacleBase = worldParts_.size();
+  boundLanes_.assign(links_.size() * 3 * L, 0.0);
+  partLanes_.assign((obstacleBase + obstacles_.size()) * kPartValues * L, 0.0);
+  partLanesPlaced_.assign(links_.size(), 0);
+  pairLaneGaps_.assign(pairCount() * L, 0.0);
+  pairNear_.assign(pairCount(), 0);
+  subtreeLanes_.assign(geometricLinks_.size() * L, 0.0);
+  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
+    const ConvexPart& part = obstacles_[o].part;
+    double* out = partLanes_.data() + (obstacleBase + o) * kPartValues * L;
+    const auto spread = [&](int at, const double* values, int count) {
+      for (int v = 0; v < count; ++v)
+        for (int l = 0; l < L; ++l) out[(at + v) * L + l] = values[v];
+    };
+    spread(0, part.a, 3);
+    spread(3, part.b, 3);
+    spread(kPartAxes, part.axes, 9);
+    spread(kPartBound, part.boundCentre, 3);
+    spread(kPartOuter, part.outerA, 3);
+    spread(kPartOuter + 3, part.outerB, 3);
   }
-  outerPlaced_[l] = 1;
+  // Every part, then every pair's part pairs in pair order.
+  partShapes_.clear();
+  for (const auto& link : links_) partShapes_.insert(partShapes_.end(), link.parts.begin(), link.parts.end());
+  for (const auto& obstacle : obstacles_) partShapes_.push_back(obstacle.part);
+  const auto add = [&](std::uint32_t a, std::uint32_t b) {
+    const ConvexPart &pa = partShapes_[a], &pb = partShapes_[b];
+    partPairs_.push_back({a, b, pa.kind == ConvexPart::Kind::Capsule && pb.kind == ConvexPart::Kind::Capsule, lanes::inverseSquaredLength(pa.a, pa.b),
+                          lanes::inverseSquaredLength(pb.a, pb.b)});
+  };
+  const auto partsOf = [&](int link) {
+    const auto first = static_cast<std::uint32_t>(partOffset_[static_cast<std::size_t>(link)]);
+    return std::pair{first, first + static_cast<std::uint32_t>(links_[static_cast<std::size_t>(link)].parts.size())};
+  };
+  partPairs_.clear();
+  pairPartsBegin_.assign(1, 0);
+  for (std::size_t p = 0; p < selfPairs_.size(); ++p) {
+    const auto [beginA, endA] = partsOf(pairA_[p]);
+    const auto [beginB, endB] = partsOf(pairB_[p]);
+    for (std::uint32_t i = beginA; i < endA; ++i)
+      for (std::uint32_t j = beginB; j < endB; ++j) add(i, j);
+    pairPartsBegin_.push_back(static_cast<std::uint32_t>(partPairs_.size()));
+  }
+  for (std::size_t o = 0; o < obstacles_.size(); ++o)
+    for (const int link : geometricLinks_) {
+      const auto [begin, end] = partsOf(link);
+      for (std::uint32_t k = begin; k < end; ++k) add(k, static_cast<std::uint32_t>(obstacleBase + o));
+      pairPartsBegin_.push_back(static_cast<std::uint32_t>(partPairs_.size()));
+    }
+  partPairGaps_.assign(partPairs_.size() * L, 0.0);
+  capsuleWork_.assign(partPairs_.size(), 0);
+  faceWork_.assign(partPairs_.size(), 0);
 }
 
-// A lower bound on the gap between two placed parts, lanes side by side: their outer capsules'.
-void FastCollisionChecker::partGapLanes(int linkA, std::size_t partA, int linkB, std::size_t partB, double* gaps) const {
-  const std::size_t ka = static_cast<std::size_t>(partOffset_[static_cast<std::size_t>(linkA)]) + partA;
-  const std::size_t kb = static_cast<std::size_t>(partOffset_[static_cast<std::size_t>(linkB)]) + partB;
-  const double* ca = outerLanes_.data() + ka * 6 * L;
-  const double* cb = outerLanes_.data() + kb * 6 * L;
-  segmentDistances(ca, ca + 3 * L, cb, cb + 3 * L, gaps);
-  const double radii = links_[static_cast<std::size_t>(linkA)].parts[partA].outerRadius + links_[static_cast<std::size_t>(linkB)].parts[partB].outerRadius;
-  for (int l = 0; l < L; ++l) gaps[l] -= radii;
+// Lanes first .. first + width(V) - 1, in passes that keep the data-dependent branches out of the
+// long loops: (1) every pair's bounds; (2) for the pairs whose bounds meet in some lane, their links
+// placed, every part pair's bounding spheres, then where those meet the exact capsule distance or
+// the separating axes (each kind in one loop), then each pair's smallest part gap; (3) the safe
+// value. Leaves each pair's gap (a lower bound; +inf in a lane left open) in pairLaneGaps_, the
+// smallest gap * share in laneSafe_, and in laneScalar_ the pairs each lane must test alone. Lanes
+// from `count` on repeat the last configuration: they are computed, never reported.
+template <class V>
+[[gnu::always_inline]] inline void FastCollisionChecker::screenLanesOf(const double* poses, int count, int first, bool tight) {
+  using lanes::load;
+  using lanes::store;
+  constexpr int W = lanes::widthOf<V>;
+  const std::size_t selfCount = selfPairs_.size(), linkCount = geometricLinks_.size(), pairs = pairCount();
+  lanes::MaskOf<V> active;
+  for (int l = 0; l < W; ++l) active[l] = first + l < count ? -1 : 0;
+  poses += first;
+  double* gaps = pairLaneGaps_.data() + first;
+  double* partGaps = partPairGaps_.data() + first;
+  const auto part = [&](std::uint32_t index) { return partLanes_.data() + static_cast<std::size_t>(index) * kPartValues * L + first; };
+  const auto bound = [&](int link) { return pointAt<V>(boundLanes_.data() + static_cast<std::size_t>(link) * 3 * L + first); };
+  const auto place = [&](int link) {
+    const auto l = static_cast<std::size_t>(link);
+    if (partLanesPlaced_[l]) return;
+    partLanesPlaced_[l] = 1;
+    const double* m = poses + l * kValues * L;
+    const auto& parts = links_[l].parts;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const ConvexPart& shape = parts[i];
+      double* out = part(static_cast<std::uint32_t>(partOffset_[l]) + static_cast<std::uint32_t>(i));
+      storePoint(out, transformed<V>(m, shape.a));
+      storePoint(out + kPartBound * L, transformed<V>(m, shape.boundCentre));
+      if (shape.kind == ConvexPart::Kind::Capsule) {
+        storePoint(out + 3 * L, transformed<V>(m, shape.b));
+        continue;
+      }
+      storePoint(out + kPartOuter * L, transformed<V>(m, shape.outerA));
+      storePoint(out + (kPartOuter + 3) * L, transformed<V>(m, shape.outerB));
+      for (int r = 0; r < 3; ++r)  // world axes: the link's rotation times the part's
+        for (int c = 0; c < 3; ++c)
+          store(out + (kPartAxes + r * 3 + c) * L, load<V>(m + (r * 3) * L) * shape.axes[c] + load<V>(m + (r * 3 + 1) * L) * shape.axes[3 + c] +
+                                                       load<V>(m + (r * 3 + 2) * L) * shape.axes[6 + c]);
+    }
+  };
+
+  // (1) Bounds.
+  std::fill(partLanesPlaced_.begin(), partLanesPlaced_.end(), 0);
+  for (int l : boundLinks_)
+    storePoint(boundLanes_.data() + static_cast<std::size_t>(l) * 3 * L + first,
+               transformed<V>(poses + static_cast<std::size_t>(l) * kValues * L, links_[static_cast<std::size_t>(l)].boundCentre));
+  for (std::size_t p = 0; p < selfCount; ++p) {
+    const Point<V> d = bound(pairA_[p]) - bound(pairB_[p]);
+    const V gap = lanes::sqrtBelow(lanes::dot(d, d)) - pairRadiusSum_[p];
+    store(gaps + p * L, gap);
+    pairNear_[p] = lanes::lowest(gap) <= band_;
+  }
+  // Against the obstacles, a whole subtree at a time where its sphere is clear of the obstacle: the
+  // sphere around a link's bound centre that holds its descendants' bounds (radius grown by a
+  // relative 1e-12 against rounding).
+  double* subtree = subtreeLanes_.data() + first;
+  for (std::size_t i = 0; i < linkCount; ++i) store(subtree + i * L, lanes::splat<V>(geometricBoundR_[i]));
+  for (std::size_t i = linkCount; i-- > 0;) {
+    const int parent = geometricParent_[i];
+    if (parent < 0) continue;
+    const Point<V> d = bound(geometricLinks_[i]) - bound(geometricLinks_[static_cast<std::size_t>(parent)]);
+    double* r = subtree + static_cast<std::size_t>(parent) * L;
+    store(r, lanes::max(load<V>(r), lanes::sqrt(lanes::dot(d, d)) + load<V>(subtree + i * L)));
+  }
+  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
+    const ConvexPart& obstacle = obstacles_[o].part;
+    double* obstacleGaps = gaps + (selfCount + o * linkCount) * L;
+    char* obstacleNear = pairNear_.data() + selfCount + o * linkCount;
+    for (std::size_t i = 0; i < linkCount;) {
+      const auto end = static_cast<std::size_t>(geometricSubtreeEnd_[i]);
+      const Point<V> centre = bound(geometricLinks_[i]);
+      if (!tight && end > i + 1) {
+        const V whole = obstacleSphereGap(obstacle, centre, load<V>(subtree + i * L) * (1.0 + 1e-12));
+        if (!(lanes::lowest(whole) <= band_)) {
+          for (; i < end; ++i) store(obstacleGaps + i * L, whole), obstacleNear[i] = 0;
+          continue;
+        }
+      }
+      const V gap = obstacleSphereGap(obstacle, centre, lanes::splat<V>(geometricBoundR_[i]));
+      store(obstacleGaps + i * L, gap);
+      obstacleNear[i] = lanes::lowest(gap) <= band_;
+      ++i;
+    }
+  }
+
+  // (2) Parts.
+  for (std::size_t pair = 0; pair < pairs; ++pair) {
+    if (!pairNear_[pair]) continue;
+    if (pair < selfCount) {
+      place(pairA_[pair]);
+      place(pairB_[pair]);
+    } else {
+      place(geometricLinks_[(pair - selfCount) % linkCount]);
+    }
+  }
+  std::size_t capsules = 0, faces = 0;
+  for (std::size_t pair = 0; pair < pairs; ++pair) {
+    if (!pairNear_[pair]) continue;
+    for (std::uint32_t k = pairPartsBegin_[pair]; k < pairPartsBegin_[pair + 1]; ++k) {
+      const PartPair& pp = partPairs_[k];
+      const Point<V> d = pointAt<V>(part(pp.indexA) + kPartBound * L) - pointAt<V>(part(pp.indexB) + kPartBound * L);
+      const V spheres = lanes::sqrtBelow(lanes::dot(d, d)) - (partShapes_[pp.indexA].boundRadius + partShapes_[pp.indexB].boundRadius);
+      store(partGaps + static_cast<std::size_t>(k) * L, spheres);
+      const bool meet = tight || lanes::lowest(spheres) <= band_;  // tight: every part pair measured
+      (pp.capsules ? capsuleWork_[capsules] : faceWork_[faces]) = k;
+      (pp.capsules ? capsules : faces) += meet;
+    }
+  }
+  for (std::size_t w = 0; w < capsules; ++w) {
+    const std::uint32_t k = capsuleWork_[w];
+    const PartPair& pp = partPairs_[k];
+    const double *a = part(pp.indexA), *b = part(pp.indexB);
+    store(partGaps + static_cast<std::size_t>(k) * L,
+          lanes::segmentDistance(pointAt<V>(a), pointAt<V>(a + 3 * L), pointAt<V>(b), pointAt<V>(b + 3 * L), pp.inverseA, pp.inverseB) -
+              (partShapes_[pp.indexA].radius + partShapes_[pp.indexB].radius));
+  }
+  for (std::size_t w = 0; w < faces; ++w) {
+    const std::uint32_t k = faceWork_[w];
+    const PartPair& pp = partPairs_[k];
+    double* g = partGaps + static_cast<std::size_t>(k) * L;
+    store(g, lanes::max(load<V>(g), solidGap<V>(partShapes_[pp.indexA], part(pp.indexA), partShapes_[pp.indexB], part(pp.indexB), band_, tight)));
+  }
+  for (std::size_t pair = 0; pair < pairs; ++pair) {
+    if (!pairNear_[pair]) continue;
+    V partsGap = lanes::splat<V>(kInfinity);
+    for (std::uint32_t k = pairPartsBegin_[pair]; k < pairPartsBegin_[pair + 1]; ++k)
+      partsGap = lanes::min(partsGap, load<V>(partGaps + static_cast<std::size_t>(k) * L));
+    const V gap = load<V>(gaps + pair * L);
+    const auto near = gap <= band_, alone = (partsGap <= band_) & near & active;
+    store(gaps + pair * L, lanes::select<V>(alone, lanes::splat<V>(kInfinity), lanes::select<V>(near, partsGap, gap)));
+    if (lanes::any(alone))
+      for (unsigned b = lanes::bits(alone); b; b &= b - 1) laneScalar_[first + __builtin_ctz(b)].push_back(pair);
+  }
+
+  // (3) The safe value.
+  V safe = lanes::splat<V>(kInfinity);
+  for (std::size_t p = 0; p < selfCount; ++p) safe = lanes::min(safe, load<V>(gaps + p * L) * pairShare_[p]);
+  for (std::size_t o = 0; o < obstacles_.size(); ++o)
+    for (std::size_t i = 0; i < linkCount; ++i) safe = lanes::min(safe, load<V>(gaps + (selfCount + o * linkCount + i) * L) * linkShare_[i]);
+  store(laneSafe_ + first, safe);
+}
+
+[[gnu::target("avx512f")]] void FastCollisionChecker::screenAvx512(FastCollisionChecker& c, const double* poses, int count, bool tight) {
+  c.screenLanesOf<lanes::Vec<8>>(poses, count, 0, tight);
+}
+[[gnu::target("avx2")]] void FastCollisionChecker::screenAvx2(FastCollisionChecker& c, const double* poses, int count, bool tight) {
+  for (int first = 0; first < count; first += 4) c.screenLanesOf<lanes::Vec<4>>(poses, count, first, tight);
+}
+void FastCollisionChecker::screenSse2(FastCollisionChecker& c, const double* poses, int count, bool tight) {
+  for (int first = 0; first < count; first += 2) c.screenLanesOf<lanes::Vec<2>>(poses, count, first, tight);
+}
+
+int FastCollisionChecker::widestLaneWidth() {
+  const std::string_view level = BatchedForwardKinematics::simdLevel();
+  return level == "avx512" ? 8 : level == "avx2" ? 4 : 2;
+}
+
+void FastCollisionChecker::setLaneWidth(int width) {
+  if (!(width == 2 || width == 4 || width == 8) || width > widestLaneWidth())
+    throw std::invalid_argument("lane width " + std::to_string(width) + ": this CPU runs 2 to " + std::to_string(widestLaneWidth()));
+  laneWidth_ = width;
+}
+
+void FastCollisionChecker::screenLanes(const double* poses, int count, bool tight) {
+  if (laneWidth_ == 8)
+    screenAvx512(*this, poses, count, tight);
+  else if (laneWidth_ == 4)
+    screenAvx2(*this, poses, count, tight);
+  else
+    screenSse2(*this, poses, count, tight);
 }
 
 void FastCollisionChecker::screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
@@ -70,139 +386,32 @@ void FastCollisionChecker::screenBatch(const Configuration* const* configuration
     for (int lane = 0; lane < count; ++lane) valid[lane] = false, safe[lane] = 0.0, ++statistics_.provenColliding;
     return;
   }
-  const auto record = [&](int lane, std::size_t pair, double gap) {
-    if (pairGaps) pairGaps[static_cast<std::size_t>(lane) * pairs + pair] = gap;
-  };
-  for (int lane = 0; lane < count; ++lane) {
-    laneSafe_[lane] = kInfinity;
-    laneWork_[lane].clear();
-    laneEnvironment_[lane].clear();
-  }
-  std::fill(outerPlaced_.begin(), outerPlaced_.end(), 0);
+  for (int lane = 0; lane < count; ++lane) laneScalar_[lane].clear();
+  screenLanes(poses, count, pairGaps != nullptr);
 
-  // Link bounds, lane by lane side by side.
-  for (int l : boundLinks_) transformLanes(poses, l, links_[static_cast<std::size_t>(l)].boundCentre, boundLanes_.data() + static_cast<std::size_t>(l) * 3 * L);
-
-  // Self: bounds of every pair, then the outer capsules of every part pair of the pairs whose
-  // bounds meet in some lane; what these cannot clear waits in laneWork_ for the exact tests.
-  pairGapLanes(boundLanes_.data(), pairA_.data(), pairB_.data(), pairRadiusSum_.data(), selfCount, selfLaneGaps_.data());
-  for (std::size_t p = 0; p < selfCount; ++p) {
-    double gap[L];
-    bool near = false;
-    for (int l = 0; l < L; ++l) gap[l] = selfLaneGaps_[p * L + static_cast<std::size_t>(l)];
-    for (int l = 0; l < count; ++l) near = near || !(gap[l] > band_);
-    if (near) {
-      const int a = pairA_[p], b = pairB_[p];
-      placeOuterLanes(poses, a);
-      placeOuterLanes(poses, b);
-      const auto& partsA = links_[static_cast<std::size_t>(a)].parts;
-      const auto& partsB = links_[static_cast<std::size_t>(b)].parts;
-      double partGap[L];
-      for (int l = 0; l < L; ++l) partGap[l] = kInfinity;
-      bool pending[L] = {};
-      for (std::size_t i = 0; i < partsA.size(); ++i)
-        for (std::size_t j = 0; j < partsB.size(); ++j) {
-          double d[L];
-          partGapLanes(a, i, b, j, d);
-          for (int l = 0; l < count; ++l) {
-            if (gap[l] > band_) continue;
-            if (d[l] > band_) {
-              partGap[l] = std::min(partGap[l], d[l]);
-            } else {
-              laneWork_[l].push_back({p, static_cast<int>(i), static_cast<int>(j), 0.0});
-              pending[l] = true;
-            }
-          }
-        }
-      for (int l = 0; l < count; ++l) {
-        if (gap[l] > band_) continue;
-        gap[l] = partGap[l];
-        // A pair with part pairs left: its gap so far waits in the work list's first entry.
-        if (pending[l]) laneWork_[l].push_back({p, -1, 0, partGap[l]});
-      }
-      for (int l = 0; l < count; ++l)
-        if (pending[l]) gap[l] = -1.0;  // decided below
-    }
-    for (int l = 0; l < count; ++l) {
-      if (gap[l] < 0.0) continue;
-      record(l, p, gap[l]);
-      laneSafe_[l] = std::min(laneSafe_[l], gap[l] * pairShare_[p]);
-    }
-  }
-
-  // Environment: every moving link's bound against every obstacle, lanes side by side.
-  for (std::size_t i = 0; i < linkCount; ++i) {
-    const double* b = boundLanes_.data() + static_cast<std::size_t>(geometricLinks_[i]) * 3 * L;
-    for (int l = 0; l < L; ++l)
-      geometricLanesX_[i * L + l] = b[l], geometricLanesY_[i * L + l] = b[L + l], geometricLanesZ_[i * L + l] = b[2 * L + l];
-  }
-  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
-    double* gaps = obstacleLaneGaps_.data();
-    sphereGaps(obstacles_[o].part, geometricLanesX_.data(), geometricLanesY_.data(), geometricLanesZ_.data(), geometricLanesR_.data(),
-               static_cast<int>(linkCount * L), gaps);
-    for (std::size_t i = 0; i < linkCount; ++i)
-      for (int l = 0; l < count; ++l) {
-        const double gap = gaps[i * L + l];
-        const std::size_t pair = selfCount + o * linkCount + i;
-        if (!(gap > band_)) {
-          laneEnvironment_[l].push_back(pair);
-          continue;
-        }
-        record(l, pair, gap);
-        laneSafe_[l] = std::min(laneSafe_[l], gap * linkShare_[i]);
-      }
-  }
-
-  // Lane by lane: the exact tests left, FCL for pairs within the band, the verdict.
+  // Lane by lane: the pairs the lane vectors left open, FCL for those within the band, the verdict.
   for (int lane = 0; lane < count; ++lane) {
     beginLane(poses, L, lane);
     uncertain_.clear();
     bool overlapping = false;
-    const auto& work = laneWork_[lane];
-    for (std::size_t w = 0; w < work.size() && !overlapping;) {
-      // A link pair's part pairs, then the entry that holds the gap its other part pairs left.
-      const std::size_t p = work[w].pair;
-      const int a = pairA_[p], b = pairB_[p];
-      placedBounds(a), placedBounds(b);
-      bool uncertain = false;
-      double gap = kInfinity;
-      for (; work[w].partA >= 0; ++w) {
-        const PartContact contact = partContact(placedPart(a, static_cast<std::size_t>(work[w].partA)),
-                                                placedPart(b, static_cast<std::size_t>(work[w].partB)), band_);
-        if (contact.contact == Contact::Overlapping) {
-          overlapping = true;
-          break;
-        }
-        if (contact.contact == Contact::Uncertain)
-          uncertain = true;
-        else
-          gap = std::min(gap, contact.gap);
-      }
-      if (overlapping) break;
-      gap = std::min(gap, work[w++].gap);
-      if (uncertain) {
-        uncertain_.push_back(Flag{true, a, b, Outcome::Uncertain});
-        record(lane, p, 0.0);
-        laneSafe_[lane] = 0.0;
-      } else {
-        record(lane, p, gap);
-        laneSafe_[lane] = std::min(laneSafe_[lane], gap * pairShare_[p]);
-      }
-    }
-    for (std::size_t k = 0; k < laneEnvironment_[lane].size() && !overlapping; ++k) {
-      const std::size_t pair = laneEnvironment_[lane][k], i = (pair - selfCount) % linkCount, o = (pair - selfCount) / linkCount;
+    double laneSafe = laneSafe_[lane];
+    for (const std::size_t pair : laneScalar_[lane]) {
+      const bool self = pair < selfCount;
+      const std::size_t i = self ? 0 : (pair - selfCount) % linkCount, o = self ? 0 : (pair - selfCount) / linkCount;
+      const int a = self ? pairA_[pair] : geometricLinks_[i], b = self ? pairB_[pair] : static_cast<int>(o);
+      if (self && !boundPlaced_[static_cast<std::size_t>(b)]) placeBound(b);  // linkPairContact reads b's bound
       double gap;
-      const Outcome outcome = linkObstacleContact(geometricLinks_[i], o, gap);
+      const Outcome outcome = self ? linkPairContact(a, b, gap) : linkObstacleContact(a, o, gap);
       if (outcome == Outcome::Overlapping) {
         overlapping = true;
-      } else if (outcome == Outcome::Uncertain) {
-        uncertain_.push_back(Flag{false, geometricLinks_[i], static_cast<int>(o), outcome});
-        record(lane, pair, 0.0);
-        laneSafe_[lane] = 0.0;
-      } else {
-        record(lane, pair, gap);
-        laneSafe_[lane] = std::min(laneSafe_[lane], gap * linkShare_[i]);
+        break;
       }
+      if (outcome == Outcome::Uncertain) {
+        uncertain_.push_back(Flag{self, a, b, outcome});
+        gap = 0.0;
+      }
+      pairLaneGaps_[pair * L + static_cast<std::size_t>(lane)] = gap;
+      laneSafe = std::min(laneSafe, gap * (self ? pairShare_[pair] : linkShare_[i]));
     }
     safe[lane] = 0.0;
     if (overlapping) {
@@ -210,10 +419,13 @@ void FastCollisionChecker::screenBatch(const Configuration* const* configuration
       valid[lane] = false;
       continue;
     }
+    if (pairGaps)
+      for (std::size_t pair = 0; pair < pairs; ++pair)
+        pairGaps[static_cast<std::size_t>(lane) * pairs + pair] = pairLaneGaps_[pair * L + static_cast<std::size_t>(lane)];
     if (uncertain_.empty()) {
       ++statistics_.provenFree;
       valid[lane] = true;
-      safe[lane] = laneSafe_[lane];
+      safe[lane] = laneSafe;
     } else {
       valid[lane] = confirmUncertain(*configurations[lane]);
     }

@@ -56,13 +56,9 @@ FastCollisionChecker::FastCollisionChecker(const Task& task, ExactCollisionCheck
   for (std::size_t l = 0; l < n; ++l) {
     partOffset_.push_back(static_cast<int>(worldParts_.size()));
     worldParts_.resize(worldParts_.size() + links_[l].parts.size());
-    if (links_[l].empty()) continue;
-    boundLinks_.push_back(static_cast<int>(l));
-    if (moving_[l]) {
-      geometricLinks_.push_back(static_cast<int>(l));
-      geometricBoundR_.push_back(links_[l].boundRadius);
-    }
+    if (!links_[l].empty()) boundLinks_.push_back(static_cast<int>(l));
   }
+  orderGeometricLinks(*task.robot);
   placed_.assign(n, 0);
   boundPlaced_.assign(n, 0);
   partPlaced_.assign(worldParts_.size(), 0);
@@ -110,19 +106,37 @@ FastCollisionChecker::FastCollisionChecker(const Task& task, ExactCollisionCheck
     pairLinks_.push_back(std::move(links));
   }
   posedLinks_ = kinematics_.emptyLinkSet();
-  boundLanes_.assign(n * 3 * kLanes, 0.0);
-  selfLaneGaps_.assign(selfPairs_.size() * kLanes, 0.0);
-  outerLanes_.assign(worldParts_.size() * 6 * kLanes, 0.0);
-  outerPlaced_.assign(n, 0);
-  geometricLanesX_.assign(geometricLinks_.size() * kLanes, 0.0);
-  geometricLanesY_ = geometricLanesZ_ = obstacleLaneGaps_ = geometricLanesX_;
-  for (std::size_t i = 0; i < geometricLinks_.size(); ++i)
-    for (int l = 0; l < kLanes; ++l) geometricLanesR_.push_back(geometricBoundR_[i]);
+  prepareLanes();
 
   for (std::size_t l = 0; l < n; ++l)
     if (!moving_[l] && !links_[l].empty())
       for (std::size_t o = 0; o < obstacles_.size(); ++o)
         if (exact.linkObstacleCollides(exactPoses_, static_cast<int>(l), o)) staticEnvironmentCollisions_.emplace_back(static_cast<int>(l), o);
+}
+
+// The moving links with geometry in depth-first order, so that every link's geometric
+// descendants follow it in one run (the batch screen tests a whole subtree against an obstacle
+// first).
+void FastCollisionChecker::orderGeometricLinks(const RobotModel& model) {
+  std::vector<std::vector<int>> children(model.links().size());
+  for (int j : model.jointOrder()) {
+    const Joint& joint = model.joints()[static_cast<std::size_t>(j)];
+    children[static_cast<std::size_t>(joint.parentLink)].push_back(joint.childLink);
+  }
+  const auto visit = [&](const auto& self, int link, int parent) -> void {
+    const auto l = static_cast<std::size_t>(link);
+    const bool geometric = moving_[l] && !links_[l].empty();
+    const int position = static_cast<int>(geometricLinks_.size());
+    if (geometric) {
+      geometricLinks_.push_back(link);
+      geometricBoundR_.push_back(links_[l].boundRadius);
+      geometricParent_.push_back(parent);
+      geometricSubtreeEnd_.push_back(0);
+    }
+    for (int child : children[l]) self(self, child, geometric ? position : parent);
+    if (geometric) geometricSubtreeEnd_[static_cast<std::size_t>(position)] = static_cast<int>(geometricLinks_.size());
+  };
+  visit(visit, model.rootLink(), -1);
 }
 
 const ConvexPart* FastCollisionChecker::placedBounds(int link) {

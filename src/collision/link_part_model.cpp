@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "fcl_geometry.hpp"
+#include "urdf_capsules.hpp"
 #include "pmdplan/collision/convex_distance.hpp"
 
 namespace pmdplan {
@@ -19,43 +20,25 @@ void plainPose(const Eigen::Isometry3d& pose, double* out) {
 
 void plainPoint(const Eigen::Vector3d& p, double* out) { out[0] = p.x(), out[1] = p.y(), out[2] = p.z(); }
 
-/// Same within rounding: URDF writers print the same number for a capsule's cylinder and caps.
-bool sameLength(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(a, b)); }
-
-/// The sphere of `shapes` (index into it) centred on `centre` with radius `radius`, or -1.
-int endSphere(const std::vector<PlacedShape>& shapes, const std::vector<char>& used, const Eigen::Vector3d& centre, double radius) {
-  for (std::size_t i = 0; i < shapes.size(); ++i) {
-    const auto* sphere = std::get_if<SphereShape>(&shapes[i].shape);
-    if (sphere && !used[i] && sameLength(sphere->radius, radius) && (shapes[i].pose.translation() - centre).norm() <= 1e-9)
-      return static_cast<int>(i);
-  }
-  return -1;
-}
-
 LinkParts partsOf(const RobotModel& model, std::size_t link) {
   const auto& shapes = model.links()[link].collisionShapes;
   std::vector<char> used(shapes.size(), 0);
   LinkParts result;
   // Cylinders first: with a sphere of their radius on both cap centres they are capsules.
-  for (std::size_t i = 0; i < shapes.size(); ++i) {
-    const auto* cylinder = std::get_if<CylinderShape>(&shapes[i].shape);
-    if (!cylinder) continue;
-    used[i] = 1;
-    const Eigen::Vector3d a = shapes[i].pose * Eigen::Vector3d(0, 0, -0.5 * cylinder->length);
-    const Eigen::Vector3d b = shapes[i].pose * Eigen::Vector3d(0, 0, 0.5 * cylinder->length);
-    const int capA = endSphere(shapes, used, a, cylinder->radius);
-    const int capB = capA >= 0 && a != b ? endSphere(shapes, used, b, cylinder->radius) : -1;
-    if (capA >= 0 && capB >= 0) {
-      used[static_cast<std::size_t>(capA)] = used[static_cast<std::size_t>(capB)] = 1;
-      const double radius = std::max({cylinder->radius, std::get<SphereShape>(shapes[static_cast<std::size_t>(capA)].shape).radius,
-                                      std::get<SphereShape>(shapes[static_cast<std::size_t>(capB)].shape).radius});
+  for (const UrdfCapsule& capsule : urdfCapsules(shapes)) {
+    const PlacedShape& placed = shapes[static_cast<std::size_t>(capsule.cylinder)];
+    const auto& cylinder = std::get<CylinderShape>(placed.shape);
+    used[static_cast<std::size_t>(capsule.cylinder)] = 1;
+    if (capsule.capA >= 0) {
+      used[static_cast<std::size_t>(capsule.capA)] = used[static_cast<std::size_t>(capsule.capB)] = 1;
       double pa[3], pb[3];
-      plainPoint(a, pa), plainPoint(b, pb);
-      result.parts.push_back(capsulePart(pa, pb, radius));
+      plainPoint(placed.pose * Eigen::Vector3d(0, 0, -0.5 * cylinder.length), pa);
+      plainPoint(placed.pose * Eigen::Vector3d(0, 0, 0.5 * cylinder.length), pb);
+      result.parts.push_back(capsulePart(pa, pb, capsule.radius));
     } else {
       double pose[12];
-      plainPose(shapes[i].pose, pose);
-      result.parts.push_back(cylinderPart(pose, cylinder->radius, 0.5 * cylinder->length));
+      plainPose(placed.pose, pose);
+      result.parts.push_back(cylinderPart(pose, cylinder.radius, 0.5 * cylinder.length));
     }
   }
   // Spheres: dropped when a capsule already contains them, else point capsules.

@@ -130,41 +130,57 @@ TEST(FastCollisionChecker, NearAMeshItGivesFclsAnswerToo) {
   EXPECT_GT(colliding, 100u);
 }
 
-// checkBatch runs its own broad phase and capsule tests over the lanes: its answers equal the
-// exact checker's too, batch after batch (a spare lane repeats the last configuration).
+// checkBatch runs its own geometric stages over the lanes: its answers equal the exact checker's
+// too, batch after batch (a spare lane repeats the last configuration), at every lane width the
+// CPU runs.
 TEST(FastCollisionChecker, BatchesGiveTheExactCheckersAnswers) {
   constexpr int kLanes = FastCollisionChecker::kLanes;
   std::size_t total = 0, colliding = 0;
-  for (const auto& name : kTasks) {
-    const Task task = loadTaskByName(name);
-    ExactCollisionChecker exact(task), reference(task);
-    FastCollisionChecker fast(task, exact);
-    RandomSource random(7);
-    for (int batchIndex = 0; batchIndex < 2000; ++batchIndex) {
-      const int count = 1 + batchIndex % kLanes;
-      Configuration configurations[kLanes];
-      const Configuration* pointers[kLanes];
-      for (int k = 0; k < count; ++k) {
-        configurations[k] = testing::taskConfiguration(task, random, (batchIndex + k) % 3);
-        pointers[k] = &configurations[k];
-      }
-      bool valid[kLanes];
-      double safe[kLanes];
-      std::vector<double> gaps(static_cast<std::size_t>(count) * fast.pairCount());
-      fast.checkBatch(pointers, count, valid, safe, gaps.data());
-      for (int k = 0; k < count; ++k) {
-        const bool expected = reference.isValid(configurations[k]);
-        ASSERT_EQ(valid[k], expected) << name << " batch " << batchIndex << " lane " << k;
-        if (expected)
-          for (std::size_t p = 0; p < fast.pairCount(); ++p)
-            ASSERT_GE(gaps[static_cast<std::size_t>(k) * fast.pairCount() + p], 0.0);
-        ++total;
-        colliding += !expected;
+  for (int width = 2; width <= FastCollisionChecker::widestLaneWidth(); width *= 2) {
+    for (const auto& name : kTasks) {
+      SCOPED_TRACE("lane width " + std::to_string(width));
+      const Task task = loadTaskByName(name);
+      ExactCollisionChecker exact(task), reference(task);
+      FastCollisionChecker fast(task, exact);
+      fast.setLaneWidth(width);
+      RandomSource random(7);
+      for (int batchIndex = 0; batchIndex < 2000; ++batchIndex) {
+        const int count = 1 + batchIndex % kLanes;
+        Configuration configurations[kLanes];
+        const Configuration* pointers[kLanes];
+        for (int k = 0; k < count; ++k) {
+          configurations[k] = testing::taskConfiguration(task, random, (batchIndex + k) % 3);
+          pointers[k] = &configurations[k];
+        }
+        bool valid[kLanes];
+        double safe[kLanes];
+        std::vector<double> gaps(static_cast<std::size_t>(count) * fast.pairCount());
+        fast.checkBatch(pointers, count, valid, safe, gaps.data());
+        for (int k = 0; k < count; ++k) {
+          const bool expected = reference.isValid(configurations[k]);
+          ASSERT_EQ(valid[k], expected) << name << " batch " << batchIndex << " lane " << k;
+          if (expected)
+            for (std::size_t p = 0; p < fast.pairCount(); ++p)
+              ASSERT_GE(gaps[static_cast<std::size_t>(k) * fast.pairCount() + p], 0.0);
+          ++total;
+          colliding += !expected;
+        }
       }
     }
   }
   EXPECT_GE(total, 10000u);
   EXPECT_GT(colliding, total / 10);
+}
+
+TEST(FastCollisionChecker, RefusesALaneWidthTheCpuCannotRun) {
+  const Task task = loadTaskByName("can_on_table");
+  ExactCollisionChecker exact(task);
+  FastCollisionChecker fast(task, exact);
+  EXPECT_EQ(fast.laneWidth(), FastCollisionChecker::widestLaneWidth());
+  EXPECT_THROW(fast.setLaneWidth(3), std::invalid_argument);
+  EXPECT_THROW(fast.setLaneWidth(16), std::invalid_argument);
+  fast.setLaneWidth(2);
+  EXPECT_EQ(fast.laneWidth(), 2);
 }
 
 }  // namespace

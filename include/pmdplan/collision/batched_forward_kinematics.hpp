@@ -2,8 +2,8 @@
 // Forward kinematics of several configurations at once, structure-of-arrays: every number of the
 // computation is a short array over the configurations (lanes), so the compiler turns each step
 // into one SIMD instruction over all lanes. The kernels see plain double arrays only (no Eigen
-// types: see DESIGN.md's traps); an AVX2 build of them is chosen at run time on CPUs that have it,
-// the SSE2 baseline runs on any x86-64. Mimic joints follow their source joint as in
+// types: see DESIGN.md's traps); AVX-512 and AVX2 builds of them are chosen at run time on CPUs
+// that have them, the SSE2 baseline runs on any x86-64. Mimic joints follow their source joint as in
 // ForwardKinematics::jointValues; results equal ForwardKinematics's to rounding (the fast checker's
 // sphere margin absorbs the difference).
 #include <Eigen/Geometry>
@@ -16,7 +16,7 @@ namespace pmdplan {
 
 class BatchedForwardKinematics {
 public:
-  static constexpr int kLanes = 4;       ///< configurations per batch
+  static constexpr int kLanes = 8;       ///< configurations per batch: one AVX-512 register of doubles
   static constexpr int kPoseValues = 12;  ///< row-major rotation (9) then translation (3)
 
   BatchedForwardKinematics(const RobotModel& model, const Eigen::Isometry3d& base = Eigen::Isometry3d::Identity());
@@ -46,8 +46,8 @@ public:
   /// The link of which both are descendants (or one is the other), deepest first.
   int commonAncestor(int a, int b) const;
 
-  /// Whether the AVX2 kernels run on this CPU (else the SSE2 ones).
-  static bool usesAvx2();
+  /// The widest kernels this CPU runs: "avx512", "avx2" or "sse2".
+  static const char* simdLevel();
 
   /// One joint of the tree walk, in plain numbers (parents before children).
   struct Step {

@@ -18,7 +18,7 @@ double segmentDistance(const double* p0, const double* p1, const double* q0, con
 
 /// segmentDistance for kSegmentLanes segment pairs at once, each point given as x[lane], then
 /// y[lane], then z[lane] (12 numbers a point): without branches, in SIMD; equal up to rounding.
-constexpr int kSegmentLanes = 4;
+constexpr int kSegmentLanes = 8;
 void segmentDistances(const double* p0, const double* p1, const double* q0, const double* q1, double* distances);
 
 /// Exact distance from the sphere (centre c, radius r) to the part, minus r; <= 0 when they touch.

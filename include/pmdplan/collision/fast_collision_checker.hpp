@@ -11,6 +11,7 @@
 // exact checker's while FCL runs on almost no checks. Pairs that no joint moves (links fixed to
 // the base, static obstacles) are decided once, by FCL.
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -56,6 +57,14 @@ public:
   /// `exact` must be built on the same task and outlive this checker; its check count is not
   /// touched (confirmations are pair tests).
   FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, double band = kDefaultBand);
+
+  /// Lanes per vector in checkBatch's geometric stages: 8 (AVX-512), 4 (AVX2) or 2 (SSE2). The
+  /// widest the CPU has by default; a narrower one can be chosen (tests compare them). Throws
+  /// std::invalid_argument for a width the CPU cannot run.
+  int laneWidth() const { return laneWidth_; }
+  void setLaneWidth(int width);
+  /// The widest lane vectors this CPU runs.
+  static int widestLaneWidth();
 
   bool isValid(const Configuration& q) override;
   bool isArmValid(const Configuration& q) override;
@@ -118,6 +127,7 @@ private:
   /// Part `index` of the link, all of it placed (placedBounds first).
   const ConvexPart& placedPart(int link, std::size_t index);
   void computeMotionWeights(const RobotModel& model);
+  void orderGeometricLinks(const RobotModel& model);
   bool decide(const Configuration& q, const double* poses, int stride, int lane, bool armOnly, double* safeDisplacement,
               double* pairGaps = nullptr);
   /// FCL on the pairs in uncertain_ at q: is q free?
@@ -125,18 +135,31 @@ private:
   /// checkBatch's geometric stages, all lanes at once (fast_batch_screen.cpp).
   void screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid, double* safe,
                    double* pairGaps);
-  void placeOuterLanes(const double* poses, int link);
-  void partGapLanes(int linkA, std::size_t partA, int linkB, std::size_t partB, double* gaps) const;
+  // screenBatch's lane-vector stage (fast_batch_screen.cpp): fills pairLaneGaps_, laneSafe_ and
+  // laneScalar_ in vectors laneWidth_ wide. `tight`: every pair's gap as tight as these tests get
+  // it (the caller keeps them, as motion-check certificates), not just tight enough to prove.
+  void screenLanes(const double* poses, int count, bool tight);
+  template <class V>
+  void screenLanesOf(const double* poses, int count, int first, bool tight);
+  static void screenAvx512(FastCollisionChecker& checker, const double* poses, int count, bool tight);
+  static void screenAvx2(FastCollisionChecker& checker, const double* poses, int count, bool tight);
+  static void screenSse2(FastCollisionChecker& checker, const double* poses, int count, bool tight);
+  /// Sizes the lane scratch, spreads the obstacles over the lanes, lists the part pairs.
+  void prepareLanes();
 
   ExactCollisionChecker& exact_;
   double band_;
+  int laneWidth_ = widestLaneWidth();
   std::vector<LinkParts> links_;
   std::vector<ObstaclePart> obstacles_;
   BatchedForwardKinematics kinematics_;
   std::vector<char> moving_;     ///< per link: does any joint move it?
   std::vector<int> boundLinks_;  ///< every link with geometry
-  std::vector<int> geometricLinks_;  ///< moving links with geometry
+  std::vector<int> geometricLinks_;  ///< moving links with geometry, depth first
   std::vector<double> geometricBoundR_;
+  /// Per geometricLinks_ entry: the entry of its nearest ancestor in the list (-1: none), and the
+  /// end of the run of its descendants (the entries after it up to there).
+  std::vector<int> geometricParent_, geometricSubtreeEnd_;
 
   // Self pairs with a moving link, in the exact checker's order, as plain arrays for the broad phase.
   std::vector<std::pair<int, int>> selfPairs_;
@@ -173,20 +196,27 @@ private:
   std::vector<Flag> uncertain_;
   LinkPoses exactPoses_;
 
-  // Scratch of screenBatch: numbers as [item][coordinate][lane].
-  struct PartWork {
-    std::size_t pair;
-    int partA, partB;  ///< -1: the end of a pair's part pairs, `gap` what the others left
-    double gap;
+  // Scratch of screenBatch: numbers as [item][value][lane].
+  std::vector<double> boundLanes_;    ///< link bound centres
+  std::vector<double> partLanes_;     ///< the link parts placed, then the obstacles (fast_batch_screen.cpp)
+  std::vector<char> partLanesPlaced_; ///< per link
+  std::vector<double> pairLaneGaps_;  ///< per pair (pairCount()): its gap, a lower bound
+  std::vector<char> pairNear_;        ///< per pair: its bounds meet in some lane
+  std::vector<double> subtreeLanes_;  ///< per geometricLinks_ entry: its subtree's bound radius
+  /// Every pair's part pairs (pair p's from pairPartsBegin_[p] to pairPartsBegin_[p + 1]); part
+  /// indices into partShapes_ and partLanes_.
+  std::vector<ConvexPart> partShapes_;  ///< the link parts (in their links' frames), then the obstacles
+  struct PartPair {
+    std::uint32_t indexA, indexB;
+    bool capsules;  ///< both capsules: their exact distance, else separating axes
+    double inverseA, inverseB;  ///< capsules: 1 / their cores' squared lengths (0: a point)
   };
-  std::vector<double> boundLanes_;   ///< link bound centres
-  std::vector<double> selfLaneGaps_; ///< per self pair: the bounds' gap
-  std::vector<double> outerLanes_;   ///< every part's outer capsule ends (6 x lanes)
-  std::vector<char> outerPlaced_;    ///< per link
-  std::vector<double> geometricLanesX_, geometricLanesY_, geometricLanesZ_, geometricLanesR_, obstacleLaneGaps_;
+  std::vector<PartPair> partPairs_;
+  std::vector<std::uint32_t> pairPartsBegin_;
+  std::vector<double> partPairGaps_;  ///< per part pair: its gap, a lower bound
+  std::vector<std::uint32_t> capsuleWork_, faceWork_;  ///< the part pairs whose bounding spheres meet
   double laneSafe_[kLanes] = {};
-  std::vector<PartWork> laneWork_[kLanes];            ///< part pairs left to the exact tests
-  std::vector<std::size_t> laneEnvironment_[kLanes];  ///< link-obstacle pairs left to them
+  std::vector<std::size_t> laneScalar_[kLanes];  ///< per lane: the pairs it tests alone
 
   std::size_t checks_ = 0;
   FastCheckStatistics statistics_;

@@ -1,0 +1,81 @@
+#pragma once
+// Distances over lane vectors (lane_vector.hpp), always inlined into the kernels that use them.
+#include "lane_vector.hpp"
+
+namespace pmdplan::lanes {
+
+/// Distance between the segments p0-p1 and q0-q1 lane by lane (either may be a point): every branch
+/// of segmentDistance (Ericson 5.1.9) computed and the right one selected, the divisions done once
+/// as reciprocals. The same closest points up to rounding (a few ulps; the callers' band is twelve
+/// orders of magnitude larger).
+template <class V>
+[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1) {
+  const V tiny = splat<V>(1e-24), one = splat<V>(1.0), zero = splat<V>(0.0);
+  const Point<V> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const V a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r), c = dot(d1, r), b = dot(d1, d2);
+  const auto pointP = a <= tiny, pointQ = e <= tiny;
+  const V inverseA = one / select(pointP, one, a), inverseE = one / select(pointQ, one, e);
+  const V denominator = a * e - b * b;
+  const auto skew = denominator > tiny * (a + e);
+  const V sFree = select(skew, clamp01((b * f - c * e) / select(skew, denominator, one)), zero);
+  const V tFree = (b * sFree + f) * inverseE;
+  const V sLow = clamp01(-c * inverseA), sHigh = clamp01((b - c) * inverseA);
+  V s = select(tFree < 0.0, sLow, select(tFree > 1.0, sHigh, sFree));
+  V t = clamp01(tFree);
+  s = select(pointQ, sLow, s);
+  t = select(pointQ, zero, t);
+  t = select(pointP, select(pointQ, zero, clamp01(f * inverseE)), t);
+  s = select(pointP, zero, s);
+  const V x = r.x + d1.x * s - d2.x * t, y = r.y + d1.y * s - d2.y * t, z = r.z + d1.z * s - d2.z * t;
+  return lanes::sqrt(x * x + y * y + z * z);
+}
+
+/// segmentDistance for segments whose lengths are known and the same in every lane (a part's),
+/// given as 1 / their squared lengths (0 for a point): two divisions fewer; the distance is a
+/// lower bound (sqrtBelow).
+template <class V>
+[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1, double inverseA,
+                                                double inverseE) {
+  const V tiny = splat<V>(1e-24), one = splat<V>(1.0), zero = splat<V>(0.0);
+  const Point<V> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const V a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r), c = dot(d1, r), b = dot(d1, d2);
+  const V denominator = a * e - b * b;
+  const auto skew = denominator > tiny * (a + e);
+  const V sFree = select(skew, clamp01((b * f - c * e) / select(skew, denominator, one)), zero);
+  const V tFree = (b * sFree + f) * inverseE;
+  const V sLow = clamp01(-c * inverseA), sHigh = clamp01((b - c) * inverseA);
+  V s = select(tFree < 0.0, sLow, select(tFree > 1.0, sHigh, sFree));
+  V t = clamp01(tFree);
+  if (inverseE == 0.0) s = sLow, t = zero;                        // q is a point
+  if (inverseA == 0.0) t = inverseE == 0.0 ? zero : clamp01(f * inverseE), s = zero;  // p is a point
+  const V x = r.x + d1.x * s - d2.x * t, y = r.y + d1.y * s - d2.y * t, z = r.z + d1.z * s - d2.z * t;
+  return sqrtBelow(x * x + y * y + z * z);
+}
+
+/// 1 / the squared length of the segment a-b, 0 if it is (within 1e-12 m) a point.
+inline double inverseSquaredLength(const double* a, const double* b) {
+  const double x = b[0] - a[0], y = b[1] - a[1], z = b[2] - a[2], length2 = x * x + y * y + z * z;
+  return length2 > 1e-24 ? 1.0 / length2 : 0.0;
+}
+
+/// A lower bound on the distance from the segment a-b to the solid cylinder (centre c, unit axis w,
+/// radius R, half length h), lane by lane: with F the segment's least distance from the axis line
+/// beyond R and G its least axial distance beyond h, every point of the segment is at least
+/// sqrt(F^2 + G^2) from the cylinder (exact for a point).
+template <class V>
+[[gnu::always_inline]] inline V segmentCylinderDistance(const Point<V>& a, const Point<V>& b, const Point<V>& c, const Point<V>& w, double R,
+                                                        double h) {
+  const V zero = splat<V>(0.0);
+  const Point<V> pa = a - c, pb = b - c;
+  const V za = dot(pa, w), zb = dot(pb, w);
+  const Point<V> qa = {pa.x - za * w.x, pa.y - za * w.y, pa.z - za * w.z};
+  const Point<V> e = {pb.x - zb * w.x - qa.x, pb.y - zb * w.y - qa.y, pb.z - zb * w.z - qa.z};
+  const V ee = dot(e, e);
+  const V t = select(ee > 1e-24, clamp01(-dot(qa, e) / select(ee > 1e-24, ee, splat<V>(1.0))), zero);
+  const Point<V> q = {qa.x + t * e.x, qa.y + t * e.y, qa.z + t * e.z};
+  const V radial = max(sqrtBelow(dot(q, q)) - R, zero);
+  const V axial = max(select(za * zb <= 0.0, zero, min(abs(za), abs(zb))) - h, zero);
+  return sqrtBelow(radial * radial + axial * axial);
+}
+
+}  // namespace pmdplan::lanes
