@@ -4,17 +4,28 @@
 
 namespace pmdplan::lanes {
 
-/// Distance between the segments p0-p1 and q0-q1 lane by lane (either may be a point): every branch
-/// of segmentDistance (Ericson 5.1.9) computed and the right one selected, the divisions done once
-/// as reciprocals. The same closest points up to rounding (a few ulps; the callers' band is twelve
-/// orders of magnitude larger).
+/// select, or for a condition that holds in every lane alike (a bool) a plain choice.
+template <class V, class M>
+[[gnu::always_inline]] inline V choose(M condition, V yes, V no) {
+  return select(condition, yes, no);
+}
 template <class V>
-[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1) {
+[[gnu::always_inline]] inline V choose(bool condition, V yes, V no) {
+  return condition ? yes : no;
+}
+
+/// Distance between the segments p0-p1 and q0-q1 lane by lane, given 1 / their squared lengths
+/// (where pointP / pointQ say a segment is a point, any value; masks, or bools when the same in
+/// every lane): every branch of segmentDistance
+/// (Ericson 5.1.9) computed and the right one selected. The same closest points up to rounding (a
+/// few ulps; the callers' band is twelve orders of magnitude larger); with `Below` the distance is
+/// a lower bound (sqrtBelow), else the correctly rounded root.
+template <bool Below, class V, class M>
+[[gnu::always_inline]] inline V segmentDistanceWith(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1, V inverseA,
+                                                    V inverseE, M pointP, M pointQ) {
   const V tiny = splat<V>(1e-24), one = splat<V>(1.0), zero = splat<V>(0.0);
   const Point<V> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   const V a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r), c = dot(d1, r), b = dot(d1, d2);
-  const auto pointP = a <= tiny, pointQ = e <= tiny;
-  const V inverseA = one / select(pointP, one, a), inverseE = one / select(pointQ, one, e);
   const V denominator = a * e - b * b;
   const auto skew = denominator > tiny * (a + e);
   const V sFree = select(skew, clamp01((b * f - c * e) / select(skew, denominator, one)), zero);
@@ -22,34 +33,31 @@ template <class V>
   const V sLow = clamp01(-c * inverseA), sHigh = clamp01((b - c) * inverseA);
   V s = select(tFree < 0.0, sLow, select(tFree > 1.0, sHigh, sFree));
   V t = clamp01(tFree);
-  s = select(pointQ, sLow, s);
-  t = select(pointQ, zero, t);
-  t = select(pointP, select(pointQ, zero, clamp01(f * inverseE)), t);
-  s = select(pointP, zero, s);
+  s = choose(pointQ, sLow, s);
+  t = choose(pointQ, zero, t);
+  t = choose(pointP, choose(pointQ, zero, clamp01(f * inverseE)), t);
+  s = choose(pointP, zero, s);
   const V x = r.x + d1.x * s - d2.x * t, y = r.y + d1.y * s - d2.y * t, z = r.z + d1.z * s - d2.z * t;
-  return lanes::sqrt(x * x + y * y + z * z);
+  const V squared = x * x + y * y + z * z;
+  return Below ? sqrtBelow(squared) : lanes::sqrt(squared);
 }
 
-/// segmentDistance for segments whose lengths are known and the same in every lane (a part's),
-/// given as 1 / their squared lengths (0 for a point): two divisions fewer; the distance is a
-/// lower bound (sqrtBelow).
+/// segmentDistanceWith for any segments: their lengths from the points, lane by lane.
+template <class V>
+[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1) {
+  const V tiny = splat<V>(1e-24), one = splat<V>(1.0);
+  const Point<V> d1 = p1 - p0, d2 = q1 - q0;
+  const V a = dot(d1, d1), e = dot(d2, d2);
+  const auto pointP = a <= tiny, pointQ = e <= tiny;
+  return segmentDistanceWith<false>(p0, p1, q0, q1, one / select(pointP, one, a), one / select(pointQ, one, e), pointP, pointQ);
+}
+
+/// segmentDistanceWith for segments whose lengths are known and the same in every lane (a part's),
+/// given as 1 / their squared lengths (0 for a point): two divisions fewer; a lower bound.
 template <class V>
 [[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1, double inverseA,
                                                 double inverseE) {
-  const V tiny = splat<V>(1e-24), one = splat<V>(1.0), zero = splat<V>(0.0);
-  const Point<V> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const V a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r), c = dot(d1, r), b = dot(d1, d2);
-  const V denominator = a * e - b * b;
-  const auto skew = denominator > tiny * (a + e);
-  const V sFree = select(skew, clamp01((b * f - c * e) / select(skew, denominator, one)), zero);
-  const V tFree = (b * sFree + f) * inverseE;
-  const V sLow = clamp01(-c * inverseA), sHigh = clamp01((b - c) * inverseA);
-  V s = select(tFree < 0.0, sLow, select(tFree > 1.0, sHigh, sFree));
-  V t = clamp01(tFree);
-  if (inverseE == 0.0) s = sLow, t = zero;                        // q is a point
-  if (inverseA == 0.0) t = inverseE == 0.0 ? zero : clamp01(f * inverseE), s = zero;  // p is a point
-  const V x = r.x + d1.x * s - d2.x * t, y = r.y + d1.y * s - d2.y * t, z = r.z + d1.z * s - d2.z * t;
-  return sqrtBelow(x * x + y * y + z * z);
+  return segmentDistanceWith<true>(p0, p1, q0, q1, splat<V>(inverseA), splat<V>(inverseE), inverseA == 0.0, inverseE == 0.0);
 }
 
 /// 1 / the squared length of the segment a-b, 0 if it is (within 1e-12 m) a point.
