@@ -1,6 +1,6 @@
 // Exact (FCL) against fast (convex parts, FCL only within the band of touching) collision checks,
 // side by side in one run, on two mixes of configurations per task (the fast checker takes them a
-// batch of four at a time, the exact one by one; times per configuration):
+// batch of eight at a time, the exact one by one; times per configuration):
 //   plan   - the states a real PMD plan of the task checks (samples and every state of its
 //            motion checks, recorded from one seeded run);
 //   random - the equivalence test's mix: uniform in the limits, near start/goal, near the straight
