@@ -1,10 +1,11 @@
 // FastCollisionChecker::screenBatch: the geometric stages for kLanes configurations at once, on
 // lane vectors (lane_vector.hpp) as wide as the running CPU's: all eight lanes in one AVX-512
-// register, or two passes of four (AVX2), or four of two (SSE2). For every pair: the link bounds;
-// where those meet, the parts' bounding spheres; where those meet, the parts themselves — capsules
-// by their exact distance, boxes and cylinders by separating axes (face normals and cylinder
-// axes). Only a lane whose pair none of these proves apart goes on, alone, to the one-configuration
-// tests (linkPairContact / linkObstacleContact, then FCL).
+// register, or two passes of four (AVX2), or four of two (SSE2). For every pair: the link bounds
+// (a whole subtree of links against an obstacle first); where those meet, the parts' bounding
+// spheres; where those meet, the parts themselves — capsules by their exact distance, boxes and
+// cylinders by separating axes (face normals and cylinder axes) and a segment-cylinder bound. Only
+// a lane whose pair none of these proves apart goes on, alone, to the one-configuration tests
+// (linkPairContact / linkObstacleContact, then FCL).
 #include <algorithm>
 #include <cmath>
 #include <limits>
