@@ -6,6 +6,7 @@
 
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/number_text.hpp"
+#include "pinned_product_blocking.hpp"
 
 namespace pmdplan {
 namespace {
@@ -44,6 +45,7 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
                                 " columns for " + std::to_string(jointCount) + " joints");
   const std::vector<int> ownAxis = ownAxisIndices(joints, options);
   const auto frames = postures.rows();
+  const PinnedProductBlocking pinnedBlocking;
   if (frames < 2)
     throw InputError(source.file, source.location.empty() ? "frames" : source.location,
                      std::to_string(frames) + " frame(s): a PCA needs more frames than joints");

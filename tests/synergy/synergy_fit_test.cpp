@@ -4,7 +4,10 @@
 
 #include <Eigen/QR>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
+#include "../../src/synergy/deterministic_random.hpp"
 #include "support/input_error_matchers.hpp"
 
 namespace pmdplan {
@@ -134,6 +137,34 @@ TEST(SynergyFit, ProvenanceGoesIntoTheModel) {
   const SynergyFit fit = fitSynergyModel(analyticCase().postures, testJoints(), ownSpin(), {"f", "l", "from the test"});
   EXPECT_EQ(fit.model.provenance, "from the test");
   EXPECT_EQ(fit.frames, 1280);
+}
+
+TEST(SynergyFit, TheResultDoesNotDependOnTheCpuCacheSizes) {
+  // Eigen blocks large products by the cache sizes it reads off the CPU; the fit must not.
+  Eigen::MatrixXd postures(20000, 7);
+  DeterministicRandom random(7);
+  const JointLimits joints = testJoints();
+  for (Eigen::Index f = 0; f < postures.rows(); ++f) {
+    const double shared = random.uniform();
+    for (Eigen::Index j = 0; j < 7; ++j) {
+      const JointLimit& limit = joints[static_cast<std::size_t>(j)];
+      const double t = j == 3 ? 0.5 : 0.5 * shared + 0.5 * random.uniform();
+      postures(f, j) = limit.lower + t * (limit.upper - limit.lower);
+    }
+  }
+  const std::ptrdiff_t l1 = Eigen::l1CacheSize(), l2 = Eigen::l2CacheSize(), l3 = Eigen::l3CacheSize();
+  std::vector<SynergyFit> fits;
+  for (const std::ptrdiff_t firstLevel : {8 * 1024, 32 * 1024, 64 * 1024}) {
+    Eigen::setCpuCacheSizes(firstLevel, 256 * 1024, 4 * 1024 * 1024);
+    fits.push_back(fitSynergyModel(postures, joints, ownSpin(), {}));
+    EXPECT_EQ(Eigen::l1CacheSize(), firstLevel) << "the fit restores the sizes it found";
+  }
+  Eigen::setCpuCacheSizes(l1, l2, l3);
+  for (std::size_t i = 1; i < fits.size(); ++i) {
+    EXPECT_EQ(fits[i].model.directions, fits[0].model.directions);
+    EXPECT_EQ(fits[i].cumulativeVariance, fits[0].cumulativeVariance);
+    EXPECT_EQ(fits[i].correlation, fits[0].correlation);
+  }
 }
 
 }  // namespace
