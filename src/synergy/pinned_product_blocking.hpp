@@ -22,4 +22,10 @@ private:
   std::ptrdiff_t l1_, l2_, l3_;
 };
 
+/// x^T x, summed over the rows (frames) in the same order on every machine.
+inline Eigen::MatrixXd gramOverFrames(const Eigen::MatrixXd& x) {
+  const PinnedProductBlocking pinned;
+  return x.transpose() * x;
+}
+
 }  // namespace pmdplan

@@ -45,7 +45,6 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
                                 " columns for " + std::to_string(jointCount) + " joints");
   const std::vector<int> ownAxis = ownAxisIndices(joints, options);
   const auto frames = postures.rows();
-  const PinnedProductBlocking pinnedBlocking;
   if (frames < 2)
     throw InputError(source.file, source.location.empty() ? "frames" : source.location,
                      std::to_string(frames) + " frame(s): a PCA needs more frames than joints");
@@ -93,7 +92,7 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
   const Eigen::RowVectorXd mean = unit.colwise().mean();
   Eigen::MatrixXd centred(frames, p);
   for (Eigen::Index k = 0; k < p; ++k) centred.col(k) = unit.col(pca[static_cast<std::size_t>(k)]).array() - mean(pca[static_cast<std::size_t>(k)]);
-  const Eigen::MatrixXd covariance = (centred.transpose() * centred) / static_cast<double>(frames - 1);
+  const Eigen::MatrixXd covariance = gramOverFrames(centred) / static_cast<double>(frames - 1);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(covariance);
   if (solver.info() != Eigen::Success) throw std::runtime_error("fitSynergyModel: eigensolver failed");
   const double total = covariance.trace();
@@ -124,7 +123,7 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
   const auto v = static_cast<Eigen::Index>(varying.size());
   Eigen::MatrixXd moving(frames, v);
   for (Eigen::Index k = 0; k < v; ++k) moving.col(k) = unit.col(varying[static_cast<std::size_t>(k)]).array() - mean(varying[static_cast<std::size_t>(k)]);
-  const Eigen::MatrixXd movingCovariance = moving.transpose() * moving;
+  const Eigen::MatrixXd movingCovariance = gramOverFrames(moving);
   const Eigen::VectorXd scale = movingCovariance.diagonal().cwiseSqrt().cwiseInverse();
   fit.correlation = scale.asDiagonal() * movingCovariance * scale.asDiagonal();
   return fit;

@@ -62,10 +62,7 @@ Eigen::MatrixXd generateLatentMotion(const LatentMotionSettings& settings, Deter
 
   latent.rowwise() -= latent.colwise().mean();
   if (frames <= 2 * count) return latent;  // too few frames to whiten; used only for tiny samples
-  const Eigen::MatrixXd covariance = [&] {
-    const PinnedProductBlocking pinned;
-    return Eigen::MatrixXd(latent.transpose() * latent / static_cast<double>(frames - 1));
-  }();
+  const Eigen::MatrixXd covariance = gramOverFrames(latent) / static_cast<double>(frames - 1);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(covariance);
   // Symmetric whitening moves the paths least of all whitening transforms, keeping them smooth.
   const Eigen::MatrixXd whitening =
