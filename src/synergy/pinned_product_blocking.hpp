@@ -8,6 +8,7 @@
 #include <cstddef>
 
 namespace pmdplan {
+namespace detail {
 
 class PinnedProductBlocking {
 public:
@@ -22,9 +23,11 @@ private:
   std::ptrdiff_t l1_, l2_, l3_;
 };
 
+}  // namespace detail
+
 /// x^T x, summed over the rows (frames) in the same order on every machine.
 inline Eigen::MatrixXd gramOverFrames(const Eigen::MatrixXd& x) {
-  const PinnedProductBlocking pinned;
+  const detail::PinnedProductBlocking pinned;
   return x.transpose() * x;
 }
 

@@ -147,9 +147,8 @@ TEST(SynergyFit, TheResultDoesNotDependOnTheCpuCacheSizes) {
   for (Eigen::Index f = 0; f < postures.rows(); ++f) {
     const double shared = random.uniform();
     for (Eigen::Index j = 0; j < 7; ++j) {
-      const JointLimit& limit = joints[static_cast<std::size_t>(j)];
       const double t = j == 3 ? 0.5 : 0.5 * shared + 0.5 * random.uniform();
-      postures(f, j) = limit.lower + t * (limit.upper - limit.lower);
+      postures(f, j) = joints[static_cast<std::size_t>(j)].denormalise(t);
     }
   }
   const std::ptrdiff_t l1 = Eigen::l1CacheSize(), l2 = Eigen::l2CacheSize(), l3 = Eigen::l3CacheSize();
