@@ -74,9 +74,12 @@ template <class V>
 }
 /// A lower bound on sqrt(x) from a single-precision square root (several times the throughput of
 /// a double one): rounding x to float, the root and the way back are off by under 2e-7 relative
-/// together, so 1e-6 less is below the true root.
+/// together, so 1e-6 less is below the true root. At four lanes (AVX2) the double root is used:
+/// GCC 12 widens four floats back to four doubles through the stack there, which costs more than
+/// the single-precision root saves (t_in_clutter's configuration checks: about a fifth).
 template <class V>
 [[gnu::always_inline]] inline V sqrtBelow(V x) {
+  if constexpr (widthOf<V> == 4) return sqrt(x) * (1.0 - 1e-6);
   using Floats = typename Width<widthOf<V>>::Floats;
   Floats f = __builtin_convertvector(x, Floats);
   for (int l = 0; l < widthOf<V>; ++l) f[l] = __builtin_sqrtf(f[l]);
