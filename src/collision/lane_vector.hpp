@@ -76,7 +76,8 @@ template <class V>
 /// a double one): rounding x to float, the root and the way back are off by under 2e-7 relative
 /// together, so 1e-6 less is below the true root. At four lanes (AVX2) the double root is used:
 /// GCC 12 widens four floats back to four doubles through the stack there, which costs more than
-/// the single-precision root saves (t_in_clutter's configuration checks: about a fifth).
+/// the single-precision root saves (AVX2 configuration checks 7–16 % faster on four of the five
+/// tasks, docs/performance.md).
 template <class V>
 [[gnu::always_inline]] inline V sqrtBelow(V x) {
   if constexpr (widthOf<V> == 4) return sqrt(x) * (1.0 - 1e-6);
