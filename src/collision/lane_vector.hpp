@@ -17,9 +17,8 @@ struct Width<2> {
   typedef float Floats __attribute__((vector_size(8)));
 };
 template <>
-struct Width<4> {
+struct Width<4> {  // no Floats: sqrtBelow takes the double root at this width
   typedef double Vec __attribute__((vector_size(32)));
-  typedef float Floats __attribute__((vector_size(16)));
 };
 template <>
 struct Width<8> {
@@ -80,11 +79,14 @@ template <class V>
 /// tasks, docs/performance.md).
 template <class V>
 [[gnu::always_inline]] inline V sqrtBelow(V x) {
-  if constexpr (widthOf<V> == 4) return sqrt(x) * (1.0 - 1e-6);
-  using Floats = typename Width<widthOf<V>>::Floats;
-  Floats f = __builtin_convertvector(x, Floats);
-  for (int l = 0; l < widthOf<V>; ++l) f[l] = __builtin_sqrtf(f[l]);
-  return __builtin_convertvector(f, V) * (1.0 - 1e-6);
+  if constexpr (widthOf<V> == 4) {
+    return sqrt(x) * (1.0 - 1e-6);
+  } else {
+    using Floats = typename Width<widthOf<V>>::Floats;
+    Floats f = __builtin_convertvector(x, Floats);
+    for (int l = 0; l < widthOf<V>; ++l) f[l] = __builtin_sqrtf(f[l]);
+    return __builtin_convertvector(f, V) * (1.0 - 1e-6);
+  }
 }
 /// Whether any lane of m is true (a few shuffles and ORs).
 template <class M>
