@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "command_registry.hpp"
+#include "planner_setting_options.hpp"
 #include "pmdplan/bench/bench_options.hpp"
 #include "pmdplan/bench/campaign.hpp"
 #include "pmdplan/bench/campaign_ranks.hpp"
@@ -34,8 +35,7 @@ struct CommandLine {
   std::vector<std::string> tasks;
   std::string planners = "pmd";
   int runs = 10;
-  long long seed = 1;
-  double timeLimit = 60.0;
+  PlannerSettingOptions settings;
   std::optional<double> grace;  // unset: max(60 s, time limit)
   std::string checker = "fast";
   double toleranceMm = 1.0;
@@ -49,10 +49,11 @@ BenchOptions benchOptions(const CommandLine& c) {
   if (!c.tasks.empty()) o.tasks = c.tasks;
   o.planners = splitList(c.planners);
   o.runs = c.runs;
-  if (c.seed < 1) throw InputError("", "--seed", "expected a seed >= 1 (OMPL cannot take seed 0), got " + std::to_string(c.seed));
-  o.seed = static_cast<std::uint64_t>(c.seed);
-  o.timeLimit = c.timeLimit;
-  o.graceSeconds = c.grace ? *c.grace : std::max(60.0, c.timeLimit);
+  o.pmdParameters = resolvePlannerSettings(c.settings, HandSamplingMode::Synergy);
+  o.fullParameters = resolvePlannerSettings(c.settings, HandSamplingMode::FullSpace);
+  o.seed = o.pmdParameters.seed;
+  o.timeLimit = o.pmdParameters.timeLimit;
+  o.graceSeconds = c.grace ? *c.grace : std::max(60.0, o.timeLimit);
   const auto kind = parseCheckerKind(c.checker);
   if (!kind) throw InputError("", "--checker", "'" + c.checker + "' is not a checker; expected exact or fast");
   o.checker = *kind;
@@ -173,8 +174,6 @@ const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seede
   app.add_option("task", c->tasks, "Built-in task names or task files (default: the five paper tasks)");
   app.add_option("--planners", c->planners, "Comma-separated planners: " + knownPlannerNames() + " (default pmd)");
   app.add_option("--runs", c->runs, "Runs per task and planner; run i uses seed S + i (default 10)");
-  app.add_option("--seed", c->seed, "First seed S, >= 1 (default 1)");
-  app.add_option("--time-limit", c->timeLimit, "Planning time limit per run in seconds (default 60)");
   app.add_option("--grace", c->grace, "Seconds past the time limit before a run's process is killed (default max(60, limit))");
   app.add_option("--checker", c->checker, "exact (FCL) or fast (default fast)");
   app.add_option("--tolerance-mm", c->toleranceMm, "Motion check and validation tolerance in millimetres (default 1)");
@@ -184,6 +183,7 @@ const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seede
   app.add_option("--markdown", c->markdown, "Write the tables as Markdown");
   app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
   app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
+  addPlannerSettingOptions(app, c->settings, "First seed S, >= 1: run i uses seed S + i");
   app.add_option("--journal", c->journal, "Keep finished runs in this folder as they finish; the same command again resumes there");
   app.add_flag("--report", c->report, "Run nothing: write the outputs from the --journal's finished runs (a campaign part way)");
   return [c] { return run(*c); };

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "planner_setting_options.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
@@ -26,10 +27,8 @@ struct Options {
   std::string planner = "pmd";
   std::string checker = "fast";
   std::string synergies;
-  std::uint64_t seed = 1;
-  double timeLimit = 60.0;
+  PlannerSettingOptions settings;
   double toleranceMm = 1.0;
-  double neighbourThreshold = PlannerParameters{}.neighbourThresholdFactor;
   std::string output;
   std::string csv;
   bool json = false;
@@ -61,16 +60,9 @@ int run(const Options& o) {
   if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
   TaskPlanningOptions options;
   options.mode = *mode;
-  options.parameters = PlannerParameters::defaultsFor(*mode);
-  options.parameters.seed = o.seed;
-  options.parameters.timeLimit = o.timeLimit;
-  options.parameters.neighbourThresholdFactor = o.neighbourThreshold;
+  options.parameters = resolvePlannerSettings(o.settings, *mode);
   options.synergies = synergies ? &*synergies : nullptr;
-  try {
-    options.parameters.check();
-  } catch (const InputError& e) {
-    throw InputError("", "--" + e.field(), e.message());
-  }
+  const PlannerParameters& parameters = options.parameters;
   ProgressLine progress("planning " + task.name);
   TaskPlanningResult result;
   try {
@@ -78,7 +70,7 @@ int run(const Options& o) {
       char status[160];
       std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep, p.armHalfSize,
                     p.samples, p.roadmapNodes, p.elapsedSeconds);
-      progress.update(p.elapsedSeconds, o.timeLimit, status);
+      progress.update(p.elapsedSeconds, parameters.timeLimit, status);
     });
   } catch (const InputError& e) {
     if (!e.file().empty()) throw;
@@ -90,7 +82,7 @@ int run(const Options& o) {
 
   const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
   if (stats.solved()) {
-    PathFile file{task.name, o.planner, o.seed, task.robot->activeJointNames(), result.path, mimicRelations(*task.robot), stats};
+    PathFile file{task.name, o.planner, parameters.seed, task.robot->activeJointNames(), result.path, mimicRelations(*task.robot), stats};
     writePathFile(output, file);
     if (!o.csv.empty()) writePathCsv(o.csv, file.jointNames, file.points);
   }
@@ -99,9 +91,10 @@ int run(const Options& o) {
     std::cout << formatJson(document) << "\n";
   } else if (stats.solved()) {
     std::printf("%s: solved with the %s planner (seed %llu) in %.3f s + %.3f s smoothing\n", task.name.c_str(), o.planner.c_str(),
-                static_cast<unsigned long long>(o.seed), stats.planningTime, stats.smoothingTime);
-    std::printf("  %zu samples, %zu roadmap nodes, final rho_a %.4f, %zu path nodes, length %.3f (normalised)\n", stats.samples,
-                stats.roadmapNodes, stats.finalArmHalfSize, stats.pathNodes, stats.pathLength);
+                static_cast<unsigned long long>(parameters.seed), stats.planningTime, stats.smoothingTime);
+    std::printf("  %zu samples (hand-arm draws) from %zu arm trials, %zu roadmap nodes, max trials %zu, final rho_a %.4f\n",
+                stats.samples, stats.armTrials, stats.roadmapNodes, stats.maxTrials, stats.finalArmHalfSize);
+    std::printf("  %zu path nodes, length %.3f (normalised)\n", stats.pathNodes, stats.pathLength);
     std::printf("  path written to %s\n", output.string().c_str());
   } else {
     std::printf("%s: not solved (%s) after %.1f s, %zu samples, %zu roadmap nodes\n", task.name.c_str(),
@@ -114,12 +107,10 @@ const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD ro
   auto o = std::make_shared<Options>();
   app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
   app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
-  app.add_option("--checker", o->checker, "fast (default: sphere model, FCL on flagged pairs; the same answers) or exact (FCL only)");
+  app.add_option("--checker", o->checker, "fast (default: convex parts and lane kernels, FCL only near contact; the same answers) or exact (FCL only)");
   app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
-  app.add_option("--seed", o->seed, "Random seed");
-  app.add_option("--time-limit", o->timeLimit, "Wall-clock limit in seconds");
   app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
-  app.add_option("--neighbour-threshold", o->neighbourThreshold, "Neighbour radius as a multiple of d(start, goal)");
+  addPlannerSettingOptions(app, o->settings);
   app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
   app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
   app.add_flag("--json", o->json, "Print the statistics as JSON");

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <utility>
 
@@ -23,6 +24,9 @@ void checkBenchOptions(const BenchOptions& o) {
     if (!seen.insert(planner).second) throw InputError("", "--planners", "planner '" + planner + "' is given twice");
   }
   if (o.runs < 1) throw InputError("", "--runs", "expected a whole number of runs >= 1, got " + std::to_string(o.runs));
+  if (o.seed < 1) throw InputError("", "--seed", "expected a seed >= 1 (OMPL cannot take seed 0)");
+  if (o.seed > std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(o.runs))
+    throw InputError("", "--seed", "too large: the runs' seeds S .. S + runs - 1 must fit in 64 bits");
   if (!(o.timeLimit > 0.0) || !std::isfinite(o.timeLimit))
     throw InputError("", "--time-limit", "expected a positive, finite number of seconds");
   if (!(o.graceSeconds >= 0.0) || !std::isfinite(o.graceSeconds))

@@ -12,12 +12,10 @@
 namespace pmdplan {
 namespace {
 
-RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record, double timeLimitSeconds) {
+RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record, const PlannerParameters& parameters) {
   TaskPlanningOptions options;
   options.mode = planner.mode;
-  options.parameters = PlannerParameters::defaultsFor(planner.mode);
-  options.parameters.seed = record.seed;
-  options.parameters.timeLimit = timeLimitSeconds;
+  options.parameters = parameters;
   options.synergies = &bench.synergies();
   const TaskPlanningResult result = planTask(bench.task(), bench.checking(), options);
   const PlanningStatistics& s = result.statistics;
@@ -25,6 +23,10 @@ RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord
   record.planningTimeSeconds = s.planningTime;
   record.smoothingTimeSeconds = s.smoothingTime;
   record.samples = s.samples;
+  record.armTrials = s.armTrials;
+  record.maxTrials = s.maxTrials;
+  record.finalArmHalfSize = s.finalArmHalfSize;
+  record.nodesByHandDimension = s.nodesByHandDimension;
   record.roadmapNodes = s.roadmapNodes;
   record.collisionChecks = s.collisionChecks();
   if (record.solved) assessPath(bench, result.path, record);
@@ -57,14 +59,14 @@ RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord recor
 
 }  // namespace
 
-RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, std::uint64_t seed, double timeLimitSeconds) {
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters) {
   RunRecord record;
   record.task = bench.task().name;
   record.planner = planner.name;
   record.run = run;
-  record.seed = seed;
-  return planner.family == PlannerFamily::Ompl ? runOmpl(bench, planner, record, timeLimitSeconds)
-                                               : runPmdRoadmap(bench, planner, record, timeLimitSeconds);
+  record.seed = parameters.seed;
+  return planner.family == PlannerFamily::Ompl ? runOmpl(bench, planner, record, parameters.timeLimit)
+                                               : runPmdRoadmap(bench, planner, record, parameters);
 }
 
 void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record) {

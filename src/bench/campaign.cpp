@@ -69,9 +69,12 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
     TaskBench* bench = inputs.tasks.at(job.task).get();
     const PlannerEntry& planner = planners.at(job.planner);
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(job.run);
+    PlannerParameters parameters = options.roadmapParameters(planner.mode);
+    parameters.seed = seed;
+    parameters.timeLimit = options.timeLimit;
     const auto began = std::chrono::steady_clock::now();
     const ChildOutcome outcome = runInChildProcess(
-        [&] { return encodeRunRecord(runPlannerOnce(*bench, planner, job.run, seed, options.timeLimit)); },
+        [&] { return encodeRunRecord(runPlannerOnce(*bench, planner, job.run, parameters)); },
         options.timeLimit + options.graceSeconds);
     std::optional<RunRecord> record;
     if (outcome.finished()) record = decodeRunRecord(outcome.output);

@@ -11,6 +11,7 @@
 
 #include "pmdplan/collision/checker_kind.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/planning/planner_setting_table.hpp"
 
 namespace pmdplan {
 namespace {
@@ -28,7 +29,9 @@ std::string CampaignJournal::header(const BenchOptions& o) {
   text.precision(17);
   text << "# pmdplan bench journal: tasks=" << joined(o.tasks) << " planners=" << joined(o.planners) << " runs=" << o.runs
        << " seed=" << o.seed << " time-limit=" << o.timeLimit << " grace=" << o.graceSeconds
-       << " checker=" << checkerKindName(o.checker) << " tolerance=" << o.toleranceMetres << " synergies=" << o.synergies.string();
+       << " checker=" << checkerKindName(o.checker) << " tolerance=" << o.toleranceMetres << " synergies=" << o.synergies.string()
+       << " pmd-settings=[" << describePlannerSettings(o.pmdParameters) << "] full-settings=["
+       << describePlannerSettings(o.fullParameters) << "]";
   return text.str();
 }
 

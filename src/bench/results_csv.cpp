@@ -27,13 +27,16 @@ const std::vector<std::string>& timingCsvColumns() {
 
 std::string runRecordsCsv(const std::vector<RunRecord>& records) {
   std::string csv =
-      "task,planner,run,seed,solved,planning_time_s,smoothing_time_s,valid,samples,roadmap_nodes,path_nodes,path_length,"
+      "task,planner,run,seed,solved,planning_time_s,smoothing_time_s,valid,samples,arm_trials,max_trials,final_rho_a,"
+      "nodes_by_hand_dimension,roadmap_nodes,path_nodes,path_length,"
       "collision_checks,subspace_distance_mean,subspace_distance_max,mahalanobis_mean,failure\n";
   for (const RunRecord& r : records) {
     const bool hasPath = r.solved;
     csv += csvField(r.task) + "," + csvField(r.planner) + "," + std::to_string(r.run) + "," + std::to_string(r.seed) + "," +
            (r.solved ? "1" : "0") + "," + number(r.planningTimeSeconds) + "," + number(r.smoothingTimeSeconds) + "," +
-           (r.valid ? "1" : "0") + "," + std::to_string(r.samples) + "," + std::to_string(r.roadmapNodes) + "," +
+           (r.valid ? "1" : "0") + "," + std::to_string(r.samples) + "," + std::to_string(r.armTrials) + "," +
+           std::to_string(r.maxTrials) + "," + number(r.finalArmHalfSize) + "," + csvField(nodesByHandDimensionText(r.nodesByHandDimension)) + "," +
+           std::to_string(r.roadmapNodes) + "," +
            (hasPath ? std::to_string(r.pathNodes) : "") + "," + (hasPath ? number(r.pathLength) : "") + "," +
            std::to_string(r.collisionChecks) + "," +
            (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMean) : "") + "," +

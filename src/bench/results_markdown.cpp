@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <set>
 
 #include "pmdplan/bench/run_summary.hpp"
 
@@ -110,6 +111,43 @@ std::string summaryMarkdown(const std::vector<std::vector<RunSummary>>& byTask, 
   return md;
 }
 
+std::string meanRatio(const MetricSummary& full, const MetricSummary& pmd) {
+  if (full.count == 0 || pmd.count == 0 || pmd.mean == 0.0) return "–";
+  return shortNumber(full.mean / pmd.mean) + "×";
+}
+
+std::string medianRatio(const MetricSummary& full, const MetricSummary& pmd) {
+  if (full.count == 0 || pmd.count == 0 || pmd.median == 0.0) return "–";
+  return shortNumber(full.median / pmd.median) + "×";
+}
+
+/// The paper's central claim (Table 2): how many times more samples, nodes and time the
+/// full-space baseline needs than pmd. Only with both among the planners.
+std::string claimMarkdown(const std::vector<std::vector<RunSummary>>& byTask, const std::vector<std::string>& planners) {
+  const auto pmd = static_cast<std::size_t>(std::find(planners.begin(), planners.end(), "pmd") - planners.begin());
+  const auto full = static_cast<std::size_t>(std::find(planners.begin(), planners.end(), "full") - planners.begin());
+  if (pmd == planners.size() || full == planners.size()) return "";
+  std::string md =
+      "### full / pmd: the paper's Table 2 claim\n\n"
+      "| task | samples, means | samples, medians | roadmap nodes, means | roadmap nodes, medians | planning time, means | "
+      "planning time, medians |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& summaries : byTask) {
+    const RunSummary& f = summaries[full];
+    const RunSummary& p = summaries[pmd];
+    md += "| " + f.task + " |";
+    addCell(md, meanRatio(f.samples, p.samples));
+    addCell(md, medianRatio(f.samples, p.samples));
+    addCell(md, meanRatio(f.roadmapNodes, p.roadmapNodes));
+    addCell(md, medianRatio(f.roadmapNodes, p.roadmapNodes));
+    addCell(md, meanRatio(f.planningTime, p.planningTime));
+    addCell(md, medianRatio(f.planningTime, p.planningTime));
+    md += "\n";
+  }
+  md += "| paper, task 0 (Table 2, means of 100 runs) | 10.4× | – | 19.4× | – | 88.1× | – |\n\n"
+        "Over the successful runs of each planner. Samples: hand-arm draws, as the paper counts them.\n\n";
+  return md;
+}
+
 }  // namespace
 
 std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vector<std::string>& tasks,
@@ -117,7 +155,10 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
   const std::vector<MetricRow> rows = {
       {"planning time [s]", [](const RunSummary& s) -> const MetricSummary& { return s.planningTime; }},
       {"smoothing time [s]", [](const RunSummary& s) -> const MetricSummary& { return s.smoothingTime; }},
-      {"samples", [](const RunSummary& s) -> const MetricSummary& { return s.samples; }},
+      {"samples (hand-arm draws; OMPL: states checked)", [](const RunSummary& s) -> const MetricSummary& { return s.samples; }},
+      {"arm trials", [](const RunSummary& s) -> const MetricSummary& { return s.armTrials; }},
+      {"max trials (j × h loops)", [](const RunSummary& s) -> const MetricSummary& { return s.maxTrials; }},
+      {"final rho_a", [](const RunSummary& s) -> const MetricSummary& { return s.finalArmHalfSize; }},
       {"roadmap nodes / graph states", [](const RunSummary& s) -> const MetricSummary& { return s.roadmapNodes; }},
       {"path nodes", [](const RunSummary& s) -> const MetricSummary& { return s.pathNodes; }},
       {"path length (normalised)", [](const RunSummary& s) -> const MetricSummary& { return s.pathLength; }},
@@ -131,7 +172,7 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
     byTask.emplace_back();
     for (const std::string& planner : planners) byTask.back().push_back(summariseRuns(records, task, planner));
   }
-  std::string md = summaryMarkdown(byTask, planners);
+  std::string md = summaryMarkdown(byTask, planners) + claimMarkdown(byTask, planners);
   for (std::size_t t = 0; t < tasks.size(); ++t) {
     const std::string& task = tasks[t];
     const std::vector<RunSummary>& summaries = byTask[t];
@@ -145,6 +186,17 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
     for (const MetricRow& row : rows) {
       md += std::string("| ") + row.label + " |";
       for (const RunSummary& s : summaries) addCell(md, cell(row.metric(s)));
+      md += "\n";
+    }
+    std::set<int> dimensions;
+    for (const RunSummary& s : summaries)
+      for (const auto& entry : s.nodeShareByHandDimension) dimensions.insert(entry.first);
+    for (const int dimension : dimensions) {
+      md += "| % of sampled nodes from hand dimension " + std::to_string(dimension) + " |";
+      for (const RunSummary& s : summaries) {
+        const auto at = s.nodeShareByHandDimension.find(dimension);
+        addCell(md, at == s.nodeShareByHandDimension.end() ? "–" : cell(at->second));
+      }
       md += "\n";
     }
     md += "\n";

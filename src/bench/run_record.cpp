@@ -1,7 +1,9 @@
 #include "pmdplan/bench/run_record.hpp"
 
 #include <charconv>
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace pmdplan {
@@ -57,6 +59,22 @@ bool parse(const std::string& text, T& value) {
   return result.ec == std::errc() && result.ptr == text.data() + text.size();
 }
 
+bool parseDimensionCounts(const std::string& text, std::map<int, std::size_t>& counts) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    const std::size_t colon = item.find(':');
+    int dimension = 0;
+    std::size_t nodes = 0;
+    if (colon == std::string::npos || !parse(item.substr(0, colon), dimension) || !parse(item.substr(colon + 1), nodes) ||
+        !counts.emplace(dimension, nodes).second)
+      return false;
+    start = end + 1;
+  }
+  return true;
+}
+
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> fields(1);
   for (const char c : line) {
@@ -68,10 +86,22 @@ std::vector<std::string> split(const std::string& line) {
 
 }  // namespace
 
+std::string nodesByHandDimensionText(const std::map<int, std::size_t>& counts) {
+  std::string text;
+  for (const auto& [dimension, nodes] : counts) {
+    if (!text.empty()) text += ',';
+    text += number(dimension);
+    text += ':';
+    text += number(nodes);
+  }
+  return text;
+}
+
 std::string encodeRunRecord(const RunRecord& r) {
   const std::vector<std::string> fields = {
-      "run-record-1", escapedText(r.task), escapedText(r.planner), number(r.run), number(r.seed), r.solved ? "1" : "0",
+      "run-record-2", escapedText(r.task), escapedText(r.planner), number(r.run), number(r.seed), r.solved ? "1" : "0",
       r.valid ? "1" : "0", number(r.planningTimeSeconds), number(r.smoothingTimeSeconds), number(r.samples),
+      number(r.armTrials), number(r.maxTrials), number(r.finalArmHalfSize), nodesByHandDimensionText(r.nodesByHandDimension),
       number(r.roadmapNodes), number(r.pathNodes), number(r.pathLength), number(r.collisionChecks),
       r.humanLikeness ? "1" : "0", number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0),
       number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0),
@@ -83,9 +113,9 @@ std::string encodeRunRecord(const RunRecord& r) {
 
 std::optional<RunRecord> decodeRunRecord(const std::string& text) {
   const auto f = split(text);
-  if (f.size() != 19 || f[0] != "run-record-1") return std::nullopt;
+  if (f.size() != 23 || f[0] != "run-record-2") return std::nullopt;
   RunRecord r;
-  const auto task = unescapedText(f[1]), planner = unescapedText(f[2]), failure = unescapedText(f[18]);
+  const auto task = unescapedText(f[1]), planner = unescapedText(f[2]), failure = unescapedText(f[22]);
   if (!task || !planner || !failure) return std::nullopt;
   r.task = *task;
   r.planner = *planner;
@@ -99,9 +129,11 @@ std::optional<RunRecord> decodeRunRecord(const std::string& text) {
   HumanLikeness h;
   const bool ok = parse(f[3], r.run) && parse(f[4], r.seed) && flag(f[5], r.solved) && flag(f[6], r.valid) &&
                   parse(f[7], r.planningTimeSeconds) && parse(f[8], r.smoothingTimeSeconds) && parse(f[9], r.samples) &&
-                  parse(f[10], r.roadmapNodes) && parse(f[11], r.pathNodes) && parse(f[12], r.pathLength) &&
-                  parse(f[13], r.collisionChecks) && flag(f[14], hasHumanLikeness) && parse(f[15], h.subspaceDistanceMean) &&
-                  parse(f[16], h.subspaceDistanceMax) && parse(f[17], h.mahalanobisMean);
+                  parse(f[10], r.armTrials) && parse(f[11], r.maxTrials) && parse(f[12], r.finalArmHalfSize) &&
+                  parseDimensionCounts(f[13], r.nodesByHandDimension) && parse(f[14], r.roadmapNodes) &&
+                  parse(f[15], r.pathNodes) && parse(f[16], r.pathLength) && parse(f[17], r.collisionChecks) &&
+                  flag(f[18], hasHumanLikeness) && parse(f[19], h.subspaceDistanceMean) && parse(f[20], h.subspaceDistanceMax) &&
+                  parse(f[21], h.mahalanobisMean);
   if (!ok) return std::nullopt;
   if (hasHumanLikeness) r.humanLikeness = h;
   return r;

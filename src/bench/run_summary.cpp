@@ -39,7 +39,23 @@ RunSummary summariseRuns(const std::vector<RunRecord>& records, const std::strin
   s.planningTime = metric([](const RunRecord& r) { return r.planningTimeSeconds; });
   s.smoothingTime = metric([](const RunRecord& r) { return r.smoothingTimeSeconds; });
   s.samples = metric([](const RunRecord& r) { return static_cast<double>(r.samples); });
+  s.armTrials = metric([](const RunRecord& r) { return static_cast<double>(r.armTrials); });
+  s.maxTrials = metric([](const RunRecord& r) { return static_cast<double>(r.maxTrials); });
+  s.finalArmHalfSize = metric([](const RunRecord& r) { return r.finalArmHalfSize; });
   s.roadmapNodes = metric([](const RunRecord& r) { return static_cast<double>(r.roadmapNodes); });
+  std::map<int, std::vector<double>> shares;  // every dimension any run used, 0 % where a run did not
+  for (const RunRecord* r : successes)
+    for (const auto& entry : r->nodesByHandDimension) shares[entry.first];
+  for (const RunRecord* r : successes) {
+    double sampled = 0.0;
+    for (const auto& entry : r->nodesByHandDimension) sampled += static_cast<double>(entry.second);
+    if (sampled == 0.0) continue;
+    for (auto& [dimension, values] : shares) {
+      const auto at = r->nodesByHandDimension.find(dimension);
+      values.push_back(at == r->nodesByHandDimension.end() ? 0.0 : 100.0 * static_cast<double>(at->second) / sampled);
+    }
+  }
+  for (auto& [dimension, values] : shares) s.nodeShareByHandDimension[dimension] = summariseValues(values);
   s.pathNodes = metric([](const RunRecord& r) { return static_cast<double>(r.pathNodes); });
   s.pathLength = metric([](const RunRecord& r) { return r.pathLength; });
   s.collisionChecks = metric([](const RunRecord& r) { return static_cast<double>(r.collisionChecks); });

@@ -16,7 +16,7 @@ nlohmann::ordered_json statisticsToJson(const PlanningStatistics& s, bool includ
   json["sweeps"] = s.sweeps;
   json["max_trials"] = s.maxTrials;
   json["samples"] = s.samples;
-  json["hand_arm_samples"] = s.handArmSamples;
+  json["arm_trials"] = s.armTrials;
   json["roadmap_nodes"] = s.roadmapNodes;
   json["roadmap_edges"] = s.roadmapEdges;
   nlohmann::ordered_json byDimension = nlohmann::ordered_json::object();
@@ -38,10 +38,10 @@ PlanningStatistics statisticsFromJson(const nlohmann::json& json, const std::str
   requireObject(json, place);
   checkKeys(json, place,
             {"status", "planning_time_s", "smoothing_time_s", "final_rho_a", "sweeps", "max_trials", "samples",
-             "hand_arm_samples", "roadmap_nodes", "roadmap_edges", "nodes_by_hand_dimension", "path_nodes",
+             "arm_trials", "roadmap_nodes", "roadmap_edges", "nodes_by_hand_dimension", "path_nodes",
              "path_nodes_before_smoothing", "path_length", "path_length_before_smoothing", "state_checks",
              "motion_checks", "collision_checks"},
-            {"status", "final_rho_a", "sweeps", "max_trials", "samples", "hand_arm_samples", "roadmap_nodes",
+            {"status", "final_rho_a", "sweeps", "max_trials", "samples", "arm_trials", "roadmap_nodes",
              "roadmap_edges", "nodes_by_hand_dimension", "path_nodes", "path_nodes_before_smoothing", "path_length",
              "path_length_before_smoothing", "state_checks", "motion_checks", "collision_checks"});
   PlanningStatistics s;
@@ -58,7 +58,7 @@ PlanningStatistics statisticsFromJson(const nlohmann::json& json, const std::str
   s.sweeps = count("sweeps");
   s.maxTrials = count("max_trials");
   s.samples = count("samples");
-  s.handArmSamples = count("hand_arm_samples");
+  s.armTrials = count("arm_trials");
   s.roadmapNodes = count("roadmap_nodes");
   s.roadmapEdges = count("roadmap_edges");
   const Place byDimensionPlace = place.key("nodes_by_hand_dimension");

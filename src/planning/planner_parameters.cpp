@@ -1,35 +1,81 @@
 #include "pmdplan/planning/planner_parameters.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan {
+namespace {
 
-PlannerParameters PlannerParameters::defaultsFor(HandSamplingMode mode) {
+constexpr PlannerPreset kPresets[] = {PlannerPreset::Paper, PlannerPreset::Kautham, PlannerPreset::Wide};
+
+std::string text(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+}  // namespace
+
+std::string plannerPresetName(PlannerPreset preset) {
+  switch (preset) {
+    case PlannerPreset::Paper: return "paper";
+    case PlannerPreset::Kautham: return "kautham";
+    case PlannerPreset::Wide: return "wide";
+  }
+  return "paper";
+}
+
+std::optional<PlannerPreset> parsePlannerPreset(const std::string& name) {
+  for (const PlannerPreset preset : kPresets)
+    if (plannerPresetName(preset) == name) return preset;
+  return std::nullopt;
+}
+
+std::string knownPlannerPresetNames() {
+  std::string names;
+  for (const PlannerPreset preset : kPresets) names += (names.empty() ? "" : ", ") + plannerPresetName(preset);
+  return names;
+}
+
+PlannerParameters PlannerParameters::preset(PlannerPreset preset, HandSamplingMode mode) {
   PlannerParameters parameters;
-  if (mode == HandSamplingMode::FullSpace) {
+  if (mode == HandSamplingMode::FullSpace) {  // Table 3's values in parentheses
     parameters.armTrials = 20;
     parameters.handTrials = 20;
+  }
+  if (preset == PlannerPreset::Kautham) {
+    parameters.neighbourThresholdFactor = 4.0;
+    parameters.armBoxGrowth = ArmBoxGrowth::Linear;
+  } else if (preset == PlannerPreset::Wide) {
+    parameters.neighbourThresholdFactor = 2.0;
   }
   return parameters;
 }
 
 void PlannerParameters::check() const {
-  if (!(initialArmHalfSize > 0.0) || !std::isfinite(initialArmHalfSize))
-    throw InputError("", "rho-a", "must be a positive number (normalised joint units), got " +
-                                      std::to_string(initialArmHalfSize));
-  if (neighbourCount < 1) throw InputError("", "neighbours", "must be at least 1");
-  if (!(neighbourThresholdFactor > 0.0) || !std::isfinite(neighbourThresholdFactor))
-    throw InputError("", "neighbour-threshold", "must be a positive factor of the start-goal distance, got " +
-                                                    std::to_string(neighbourThresholdFactor));
-  if (armTrials < 1) throw InputError("", "arm-trials", "must be at least 1, got " + std::to_string(armTrials));
-  if (handTrials < 1) throw InputError("", "hand-trials", "must be at least 1, got " + std::to_string(handTrials));
-  if (minSweepVisits < 1) throw InputError("", "sweep-visits", "must be at least 1");
-  if (maxSamples < 1) throw InputError("", "max-samples", "must be at least 1");
-  if (!(timeLimit > 0.0))
-    throw InputError("", "time-limit", "must be a positive number of seconds, got " + std::to_string(timeLimit));
+  const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
+  if (!positive(initialArmHalfSize) || initialArmHalfSize > 1.0)
+    throw InputError("", "rho-a", "must be a number in (0, 1] (normalised arm-joint units), got " + text(initialArmHalfSize));
+  if (neighbourCount < 1) throw InputError("", "neighbours", "must be a whole number >= 1");
+  if (!positive(neighbourThresholdFactor))
+    throw InputError("", "neighbour-threshold",
+                     "must be a positive, finite factor of the start-goal distance, got " + text(neighbourThresholdFactor));
+  if (armTrials < 1) throw InputError("", "arm-trials", "must be a whole number >= 1, got " + std::to_string(armTrials));
+  if (handTrials < 1) throw InputError("", "hand-trials", "must be a whole number >= 1, got " + std::to_string(handTrials));
+  if (minSweepVisits < 1) throw InputError("", "sweep-visits", "must be a whole number >= 1");
+  if (maxSamples < 1) throw InputError("", "max-samples", "must be a whole number >= 1");
+  if (!positive(pmdBox.kappa))
+    throw InputError("", "kappa", "must be a positive, finite number of standard deviations, got " + text(pmdBox.kappa));
+  if (pmdBox.maxDirections < 1)
+    throw InputError("", "max-pmds", "must be a whole number >= 1, got " + std::to_string(pmdBox.maxDirections));
+  // A limit past a year is "no limit" for every purpose but std::chrono's, which would overflow.
+  constexpr double kLongestFiniteLimit = 365.0 * 24 * 3600;
+  if (!(timeLimit > 0.0) || (std::isfinite(timeLimit) && timeLimit > kLongestFiniteLimit))
+    throw InputError("", "time-limit",
+                     "must be a positive number of seconds, at most " + text(kLongestFiniteLimit) + " (or inf), got " + text(timeLimit));
 }
 
 }  // namespace pmdplan

@@ -29,8 +29,6 @@ void PmdRoadmapPlanner::setStartAndGoal(Configuration start, Configuration goal)
   armSampler_.reset();
 }
 
-void PmdRoadmapPlanner::setParameters(PlannerParameters parameters) { parameters_ = parameters; }
-
 void PmdRoadmapPlanner::setup() {
   parameters_.check();
   space_.check();
@@ -44,7 +42,7 @@ void PmdRoadmapPlanner::setup() {
   }
   armSampler_.emplace(space_, start_, goal_);
   // FINDNEIGHBORS' threshold: the start-goal distance (times a factor, 1 in the paper), in the
-  // same normalised full space as all other distances (DESIGN.md).
+  // same normalised full space as all other distances (docs/deviations.md).
   startGoalDistance_ = space_.distance(start_, goal_);
   neighbourThreshold_ = parameters_.neighbourThresholdFactor * startGoalDistance_;
 }
@@ -110,21 +108,25 @@ PlannerStatus PmdRoadmapPlanner::solve() {
 
 // One hypercube B^a(step): up to n_A arm configurations (Algorithm 1, one trial each), each with up
 // to n_H hand configurations (Algorithm 2, one trial each), the hand dimension growing by one per
-// failed hand sample. N and the time limit are checked before every draw.
+// failed hand sample. A sample is one hand-arm draw (Table 2's count); N bounds the samples and,
+// so that an arm that never comes free cannot loop for ever, the arm trials too. N and the time
+// limit are checked before every draw.
 PmdRoadmapPlanner::HypercubeOutcome PmdRoadmapPlanner::sampleHypercube(double step, double armHalfSize) {
   Configuration q = start_;
   std::size_t trials = 0;
   for (int j = 0; j < parameters_.armTrials; ++j) {
-    if (statistics_.samples >= parameters_.maxSamples) return {std::nullopt, PlannerStatus::SampleLimit};
+    if (statistics_.samples >= parameters_.maxSamples || statistics_.armTrials >= parameters_.maxSamples)
+      return {std::nullopt, PlannerStatus::SampleLimit};
     if (timeIsUp()) return {std::nullopt, PlannerStatus::TimeLimit};
-    ++statistics_.samples;
+    ++statistics_.armTrials;
     ++statistics_.stateChecks;
     if (!armSampler_->sample(step, armHalfSize, random_, stateValidator_, q)) continue;
     int dimSch = handSampler_->initialDimension();
     for (int h = 0; h < parameters_.handTrials; ++h) {
+      if (statistics_.samples >= parameters_.maxSamples) return {std::nullopt, PlannerStatus::SampleLimit};
       if (timeIsUp()) return {std::nullopt, PlannerStatus::TimeLimit};
       handSampler_->sample(dimSch, random_, q);
-      ++statistics_.handArmSamples;
+      ++statistics_.samples;
       ++statistics_.stateChecks;
       ++trials;
       if (stateValidator_.isValid(q)) {

@@ -7,8 +7,8 @@ namespace pmdplan {
 TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningOptions& options,
                             ProgressCallback progress) {
   const PlanningSpace space = planningSpaceFromRobot(*task.robot);
-  auto sampler = makeHandSampler(options.mode, space, options.synergies);
   options.parameters.check();
+  auto sampler = makeHandSampler(options.mode, space, options.synergies, options.parameters.pmdBox);
   PmdRoadmapPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
   planner.setStartAndGoal(task.start, task.goal);
   if (progress) planner.setProgressCallback(std::move(progress));

@@ -48,7 +48,10 @@ TEST_F(BenchmarkRun, APathThatMissesTheGoalIsAFailure) {
 }
 
 TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
-  const RunRecord r = runPlannerOnce(*bench_, *findPlanner("pmd"), 1, 2, 30.0);
+  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  parameters.seed = 2;
+  parameters.timeLimit = 30.0;
+  const RunRecord r = runPlannerOnce(*bench_, *findPlanner("pmd"), 1, parameters);
   EXPECT_EQ(r.task, "can_on_table");
   EXPECT_EQ(r.planner, "pmd");
   EXPECT_EQ(r.seed, 2u);
@@ -62,8 +65,11 @@ TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
 }
 
 TEST_F(BenchmarkRun, AnOmplPlannerSolvesInAForkedChildAndTheSameSeedGivesTheSameRun) {
+  PlannerParameters parameters;
+  parameters.seed = 3;
+  parameters.timeLimit = 30.0;
   const auto once = [&] {
-    return runInChildProcess([&] { return encodeRunRecord(runPlannerOnce(*bench_, *findPlanner("ompl:RRTConnect"), 0, 3, 30.0)); },
+    return runInChildProcess([&] { return encodeRunRecord(runPlannerOnce(*bench_, *findPlanner("ompl:RRTConnect"), 0, parameters)); },
                              120.0);
   };
   const ChildOutcome first = once(), second = once();

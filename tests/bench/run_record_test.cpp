@@ -18,6 +18,10 @@ RunRecord solvedRecord() {
   r.planningTimeSeconds = 0.1 + 0.2;  // not a short decimal: must come back bit for bit
   r.smoothingTimeSeconds = 1.0 / 3.0;
   r.samples = 1234;
+  r.armTrials = 321;
+  r.maxTrials = 22;
+  r.finalArmHalfSize = 0.001 * 6;
+  r.nodesByHandDimension = {{2, 7}, {3, 0}, {5, 12}};
   r.roadmapNodes = 77;
   r.pathNodes = 5;
   r.pathLength = std::sqrt(2.0);
@@ -41,6 +45,10 @@ TEST(RunRecord, EncodingRestoresEveryFieldExactly) {
   EXPECT_EQ(back->planningTimeSeconds, r.planningTimeSeconds);
   EXPECT_EQ(back->smoothingTimeSeconds, r.smoothingTimeSeconds);
   EXPECT_EQ(back->samples, 1234u);
+  EXPECT_EQ(back->armTrials, 321u);
+  EXPECT_EQ(back->maxTrials, 22u);
+  EXPECT_EQ(back->finalArmHalfSize, r.finalArmHalfSize);
+  EXPECT_EQ(back->nodesByHandDimension, r.nodesByHandDimension);
   EXPECT_EQ(back->roadmapNodes, 77u);
   EXPECT_EQ(back->pathNodes, 5u);
   EXPECT_EQ(back->pathLength, r.pathLength);

@@ -31,8 +31,8 @@ PathFile samplePath() {
   s.finalArmHalfSize = 0.002;
   s.sweeps = 2;
   s.maxTrials = 23;
-  s.samples = 699;
-  s.handArmSamples = 2000;
+  s.samples = 2000;
+  s.armTrials = 699;
   s.roadmapNodes = 29;
   s.roadmapEdges = 28;
   s.nodesByHandDimension = {{2, 7}, {3, 8}, {5, 12}};
@@ -64,7 +64,7 @@ void expectSamePath(const PathFile& a, const PathFile& b, bool timings) {
   EXPECT_EQ(s.sweeps, t.sweeps);
   EXPECT_EQ(s.maxTrials, t.maxTrials);
   EXPECT_EQ(s.samples, t.samples);
-  EXPECT_EQ(s.handArmSamples, t.handArmSamples);
+  EXPECT_EQ(s.armTrials, t.armTrials);
   EXPECT_EQ(s.roadmapNodes, t.roadmapNodes);
   EXPECT_EQ(s.roadmapEdges, t.roadmapEdges);
   EXPECT_EQ(s.nodesByHandDimension, t.nodesByHandDimension);

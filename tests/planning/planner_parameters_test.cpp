@@ -15,7 +15,10 @@ TEST(PlannerParameters, DefaultsAreTable3) {
   const PlannerParameters pmd = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   EXPECT_EQ(pmd.initialArmHalfSize, 0.001);
   EXPECT_EQ(pmd.neighbourCount, 10u);
-  EXPECT_EQ(pmd.neighbourThresholdFactor, 2.0) << "twice d(c_ini, c_goal): see planner_parameters.hpp";
+  EXPECT_EQ(pmd.neighbourThresholdFactor, 1.0) << "Sect. 5.2: the radius is d(c_ini, c_goal)";
+  EXPECT_EQ(pmd.armBoxGrowth, ArmBoxGrowth::Factorial) << "Algorithm 4: rho_a = k·rho_a";
+  EXPECT_EQ(pmd.pmdBox.kappa, 2.0);
+  EXPECT_EQ(pmd.pmdBox.maxDirections, 4) << "Sect. 6.2: thumb base + up to 4 PMDs";
   EXPECT_EQ(pmd.armTrials, 10);
   EXPECT_EQ(pmd.handTrials, 10);
   EXPECT_EQ(pmd.minSweepVisits, 10u) << "n_A: see planner_parameters.hpp";
@@ -26,6 +29,21 @@ TEST(PlannerParameters, DefaultsAreTable3) {
   EXPECT_EQ(full.initialArmHalfSize, 0.001);
   EXPECT_EQ(full.armTrials, 20);
   EXPECT_EQ(full.handTrials, 20);
+  EXPECT_EQ(full.neighbourThresholdFactor, 1.0);
+}
+
+TEST(PlannerParameters, PresetsDifferFromThePaperOnlyWhereTheySay) {
+  const PlannerParameters paper = PlannerParameters::preset(PlannerPreset::Paper, HandSamplingMode::Synergy);
+  const PlannerParameters kautham = PlannerParameters::preset(PlannerPreset::Kautham, HandSamplingMode::Synergy);
+  const PlannerParameters wide = PlannerParameters::preset(PlannerPreset::Wide, HandSamplingMode::FullSpace);
+  EXPECT_EQ(kautham.neighbourThresholdFactor, 4.0);
+  EXPECT_EQ(kautham.armBoxGrowth, ArmBoxGrowth::Linear);
+  EXPECT_EQ(kautham.armTrials, paper.armTrials);
+  EXPECT_EQ(wide.neighbourThresholdFactor, 2.0);
+  EXPECT_EQ(wide.armTrials, 20) << "a preset keeps Table 3's per-mode values";
+  for (const PlannerPreset preset : {PlannerPreset::Paper, PlannerPreset::Kautham, PlannerPreset::Wide})
+    EXPECT_EQ(parsePlannerPreset(plannerPresetName(preset)), preset);
+  EXPECT_FALSE(parsePlannerPreset("Paper").has_value());
 }
 
 void expectRejected(const PlannerParameters& parameters, const std::string& field) {
@@ -64,7 +82,19 @@ TEST(PlannerParameters, OutOfRangeValuesNameTheirOption) {
   p.maxSamples = 0;
   expectRejected(p, "max-samples");
   p = {};
+  p.pmdBox.kappa = -1.0;
+  expectRejected(p, "kappa");
+  p = {};
+  p.pmdBox.maxDirections = 0;
+  expectRejected(p, "max-pmds");
+  p = {};
+  p.initialArmHalfSize = 1.5;
+  expectRejected(p, "rho-a");
+  p = {};
   p.timeLimit = 0.0;
+  expectRejected(p, "time-limit");
+  p = {};
+  p.timeLimit = 1e10;
   expectRejected(p, "time-limit");
   p = {};
   p.timeLimit = std::numeric_limits<double>::infinity();

@@ -82,7 +82,8 @@ TEST(PmdRoadmapPlanner, SolvesTheNarrowPassage) {
     EXPECT_NEAR(stats.pathLength, pathLength(path, toy::space()), 1e-12);
     EXPECT_EQ(stats.roadmapNodes, run.planner.roadmap().nodeCount());
     EXPECT_GE(stats.samples, stats.roadmapNodes - 2);
-    EXPECT_GE(stats.handArmSamples, stats.roadmapNodes - 2);
+    EXPECT_GE(stats.armTrials, stats.roadmapNodes - 2);
+    EXPECT_GE(stats.samples, stats.armTrials - (stats.roadmapNodes - 2)) << "every arm trial that gave a node drew a hand";
     EXPECT_GE(stats.maxTrials, 1u);
     EXPECT_LE(stats.maxTrials, 100u);
     EXPECT_EQ(stats.finalArmHalfSize, 0.001) << "the first sweep suffices here";
@@ -108,7 +109,7 @@ TEST(PmdRoadmapPlanner, TheSameSeedGivesTheSamePath) {
   const PlanningStatistics& a = first.planner.statistics();
   const PlanningStatistics& b = second.planner.statistics();
   EXPECT_EQ(a.samples, b.samples);
-  EXPECT_EQ(a.handArmSamples, b.handArmSamples);
+  EXPECT_EQ(a.armTrials, b.armTrials);
   EXPECT_EQ(a.roadmapNodes, b.roadmapNodes);
   EXPECT_EQ(a.roadmapEdges, b.roadmapEdges);
   EXPECT_EQ(a.nodesByHandDimension, b.nodesByHandDimension);
@@ -178,7 +179,7 @@ TEST(PmdRoadmapPlanner, HandDimensionGrowsFromTwoToTheMaximum) {
   const SynergyModel model = toy::synergyModel();
   std::vector<int> recorded;
   PlannerParameters parameters = withSeed(1);
-  parameters.maxSamples = 3;
+  parameters.maxSamples = 30;  // N bounds the samples (hand-arm draws): n_H = 10 for each of 3 arms
   PmdRoadmapPlanner planner(toy::space(), stateValidator, motionValidator,
                             std::make_unique<RecordingHandSampler>(
                                 std::make_unique<SynergyHandSampler>(toy::space(), model), recorded),
@@ -186,11 +187,11 @@ TEST(PmdRoadmapPlanner, HandDimensionGrowsFromTwoToTheMaximum) {
   planner.setStartAndGoal(toy::start(), toy::goal());
   EXPECT_EQ(planner.solve(), PlannerStatus::SampleLimit);
   const std::vector<int> perArmConfiguration = {2, 3, 4, 4, 4, 4, 4, 4, 4, 4};
-  ASSERT_EQ(recorded.size(), 3 * perArmConfiguration.size()) << "n_H hand samples for each of N arm samples";
+  ASSERT_EQ(recorded.size(), 3 * perArmConfiguration.size()) << "n_H hand samples for each of 3 arm samples";
   for (std::size_t i = 0; i < recorded.size(); ++i)
     EXPECT_EQ(recorded[i], perArmConfiguration[i % perArmConfiguration.size()]) << "hand sample " << i;
-  EXPECT_EQ(planner.statistics().samples, 3u);
-  EXPECT_EQ(planner.statistics().handArmSamples, 30u);
+  EXPECT_EQ(planner.statistics().armTrials, 3u);
+  EXPECT_EQ(planner.statistics().samples, 30u) << "Table 2's samples: one per hand-arm draw";
   EXPECT_EQ(planner.statistics().roadmapNodes, 2u);
 }
 
@@ -206,10 +207,10 @@ TEST(PmdRoadmapPlanner, NodesRecordTheDimensionThatMadeThem) {
 
 TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheSampleLimit) {
   PlannerParameters parameters = withSeed(3);
-  parameters.maxSamples = 5000;
+  parameters.maxSamples = 50'000;
   ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
   EXPECT_EQ(run.planner.solve(), PlannerStatus::SampleLimit);
-  EXPECT_EQ(run.planner.statistics().samples, 5000u);
+  EXPECT_EQ(run.planner.statistics().samples, 50'000u);
   EXPECT_TRUE(run.planner.path().empty());
   EXPECT_FALSE(run.planner.statistics().solved());
   EXPECT_GT(run.planner.statistics().sweeps, 1u) << "rho_a grows once a sweep fails";

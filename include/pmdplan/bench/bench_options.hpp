@@ -7,6 +7,7 @@
 
 #include "pmdplan/collision/checker_kind.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
+#include "pmdplan/planning/planner_parameters.hpp"
 
 namespace pmdplan {
 
@@ -23,6 +24,10 @@ struct BenchOptions {
   /// A run's child process is killed once it has gone this long past the time limit without a
   /// result (smoothing and validation come after planning), and the run recorded as a failure.
   double graceSeconds = 60.0;
+  /// Our planners' settings (planner_setting_table.hpp) for each hand sampling mode; every run
+  /// takes its seed and the time limit above instead of theirs.
+  PlannerParameters pmdParameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  PlannerParameters fullParameters = PlannerParameters::defaultsFor(HandSamplingMode::FullSpace);
   CheckerKind checker = CheckerKind::Fast;
   /// Motion-check resolution of every planner and of the validation, metres.
   double toleranceMetres = SegmentChecker::kDefaultTolerance;
@@ -36,11 +41,16 @@ struct BenchOptions {
   /// Run nothing: write the outputs from the journal's finished runs only (a report of a campaign
   /// part way). Needs a journal.
   bool reportOnly = false;
+
+  const PlannerParameters& roadmapParameters(HandSamplingMode mode) const {
+    return mode == HandSamplingMode::Synergy ? pmdParameters : fullParameters;
+  }
 };
 
 /// Throws InputError (no file; field named like the command-line option, e.g. "--runs",
 /// "--planners", "--time-limit", "--tolerance-mm", "TASK") for an empty or unknown planner list,
-/// a repeated planner or task, runs < 1, a time limit that is not a positive finite number, a
+/// a repeated planner or task, runs < 1, a seed < 1 (OMPL cannot take seed 0) or one whose runs
+/// would pass the largest seed, a time limit that is not a positive finite number, a
 /// tolerance that is not positive, no task, an output (file named, field "--csv", "--markdown",
 /// "--ompl-log", "--plot") whose folder does not exist, or a report ("--report") without a journal. Tasks themselves are checked when loaded.
 void checkBenchOptions(const BenchOptions& options);

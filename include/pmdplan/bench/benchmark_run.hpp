@@ -10,14 +10,16 @@
 #include <vector>
 
 #include "pmdplan/bench/planner_roster.hpp"
+#include "pmdplan/planning/planner_parameters.hpp"
 #include "pmdplan/bench/run_record.hpp"
 #include "pmdplan/bench/task_bench.hpp"
 
 namespace pmdplan {
 
-/// Runs planner `planner` once with `seed` (run number `run`). An OMPL planner sets OMPL's
+/// Runs planner `planner` once (run number `run`) with the settings `parameters`: all of them for
+/// our planners, only the seed and the time limit for OMPL's. An OMPL planner sets OMPL's
 /// process-wide seed, so call this in a fresh process per run (forked_run.hpp).
-RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, std::uint64_t seed, double timeLimitSeconds);
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters);
 
 /// Validates the solved run's path and measures it into `record` (path nodes, length,
 /// human-likeness, valid); an invalid path sets `failure` to the validation's first problem.

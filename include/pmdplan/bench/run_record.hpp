@@ -4,6 +4,7 @@
 // (encodeRunRecord / decodeRunRecord) that restores every number exactly.
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -29,9 +30,16 @@ struct RunRecord {
   bool valid = false;
   double planningTimeSeconds = 0.0;
   double smoothingTimeSeconds = 0.0;
-  /// PMD planners: arm configurations tried (numSamples of Algorithm 4, Table 2's "samples").
+  /// PMD planners: hand-arm draws (Table 2's and Table 4's "samples").
   /// OMPL planners: states their validity checker was asked about.
   std::size_t samples = 0;
+  /// PMD planners only (0 for OMPL's): arm configurations tried (passes of the j loop), the most
+  /// trials one hypercube needed (Table 2's "j × h loops"), rho_a of the last sweep, and the
+  /// sampled roadmap nodes by the hand dimension that produced them.
+  std::size_t armTrials = 0;
+  std::size_t maxTrials = 0;
+  double finalArmHalfSize = 0.0;
+  std::map<int, std::size_t> nodesByHandDimension;
   /// PMD planners: roadmap nodes; OMPL planners: vertices of the planner data ("graph states").
   std::size_t roadmapNodes = 0;
   /// Of the smoothed path (0 if not solved).
@@ -47,6 +55,9 @@ struct RunRecord {
   /// Solved and valid: the only runs that count as successes.
   bool succeeded() const { return solved && valid; }
 };
+
+/// "2:5,3:4": sampled nodes by hand dimension; "" for none.
+std::string nodesByHandDimensionText(const std::map<int, std::size_t>& counts);
 
 /// One line of text (no newline inside) holding every field, numbers in their shortest exact form.
 std::string encodeRunRecord(const RunRecord& record);

@@ -2,6 +2,7 @@
 // The runs of one planner on one task summed up as the paper's tables do: the success rate over
 // all runs, and the mean and median of each metric over the successful runs (solved and valid).
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,11 @@ struct RunSummary {
   std::size_t runs = 0;
   std::size_t solved = 0;     ///< planner said solved
   std::size_t succeeded = 0;  ///< solved and valid
-  MetricSummary planningTime, smoothingTime, samples, roadmapNodes, pathNodes, pathLength, collisionChecks,
-      subspaceDistanceMean, subspaceDistanceMax, mahalanobisMean;
+  MetricSummary planningTime, smoothingTime, samples, armTrials, maxTrials, finalArmHalfSize, roadmapNodes, pathNodes,
+      pathLength, collisionChecks, subspaceDistanceMean, subspaceDistanceMax, mahalanobisMean;
+  /// Per hand dimension (2 = thumb base + 1 PMD, ...): the share of a run's sampled nodes that
+  /// dimension produced, in %, over the successful runs that sampled any node (Table 2's rows).
+  std::map<int, MetricSummary> nodeShareByHandDimension;
 
   double successRate() const { return runs ? static_cast<double>(succeeded) / static_cast<double>(runs) : 0.0; }
 };

@@ -10,7 +10,7 @@ namespace pmdplan {
 enum class PlannerStatus {
   NotRun,
   Solved,
-  SampleLimit,   ///< N arm trials made without joining c_ini and c_goal
+  SampleLimit,   ///< N samples (or N arm trials) drawn without joining c_ini and c_goal
   TimeLimit,     ///< the wall-clock limit stopped the roadmap construction
   InvalidStart,  ///< c_ini is in collision
   InvalidGoal,   ///< c_goal is in collision
@@ -34,10 +34,11 @@ struct PlanningStatistics {
   /// Largest number of hand trials (passes of the j×h loops) one hypercube needed before it gave a
   /// free sample.
   std::size_t maxTrials = 0;
-  /// numSamples of Algorithm 4: arm configurations tried (passes of the j loop).
+  /// Samples as Table 2 and Table 4 count them: hand-arm configurations drawn and checked (passes
+  /// of the h loop; the authors' code counts one per hand draw).
   std::size_t samples = 0;
-  /// Hand-arm configurations drawn and checked (passes of the h loop).
-  std::size_t handArmSamples = 0;
+  /// Arm configurations tried (passes of the j loop, whether or not the arm came free).
+  std::size_t armTrials = 0;
   /// Nodes (c_ini and c_goal included) and edges of the roadmap.
   std::size_t roadmapNodes = 0;
   std::size_t roadmapEdges = 0;

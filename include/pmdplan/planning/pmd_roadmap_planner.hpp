@@ -31,7 +31,7 @@ struct PlannerProgress {
   std::size_t hypercube = 0;     ///< index i in the Van der Corput order, 0 .. hypercubes-1
   std::size_t hypercubes = 0;    ///< STEPS + 1
   SearchRange searchRange;
-  std::size_t samples = 0;
+  std::size_t samples = 0;       ///< hand-arm draws so far
   std::size_t roadmapNodes = 0;
   std::size_t components = 0;
   double elapsedSeconds = 0.0;
@@ -49,7 +49,6 @@ public:
 
   /// c_ini and c_goal: full configurations within the limits. They need not lie in the PMD subspace.
   void setStartAndGoal(Configuration start, Configuration goal);
-  void setParameters(PlannerParameters parameters);
   void setProgressCallback(ProgressCallback callback) { progress_ = std::move(callback); }
 
   /// Checks the space, the parameters and the problem (solve() calls it too). Throws InputError

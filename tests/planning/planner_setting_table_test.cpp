@@ -1,0 +1,67 @@
+#include "pmdplan/planning/planner_setting_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "pmdplan/core/input_error.hpp"
+
+namespace pmdplan {
+namespace {
+
+const PlannerSetting& settingNamed(const std::string& flag) {
+  for (const PlannerSetting& s : plannerSettingTable())
+    if (s.flag == flag) return s;
+  throw std::out_of_range("no setting " + flag);
+}
+
+TEST(PlannerSettingTable, FlagsAreUniqueAndEveryValueReadsBack) {
+  std::set<std::string> flags;
+  const PlannerParameters defaults = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  for (const PlannerSetting& s : plannerSettingTable()) {
+    EXPECT_TRUE(flags.insert(s.flag).second) << s.flag;
+    EXPECT_FALSE(s.help.empty()) << s.flag;
+    PlannerParameters p;
+    s.set(p, s.get(defaults));
+    EXPECT_EQ(describePlannerSettings(p), describePlannerSettings(defaults)) << s.flag;
+  }
+}
+
+// Every field of PlannerParameters is reachable: setting each one to a value other than the
+// default changes the description, and changes only that setting's part of it.
+TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
+  const std::map<std::string, std::string> other = {
+      {"rho-a", "0.05"},        {"rho-a-growth", "linear"}, {"neighbours", "7"},  {"neighbour-threshold", "2.5"},
+      {"arm-trials", "3"},      {"hand-trials", "4"},       {"max-samples", "99"}, {"sweep-visits", "1"},
+      {"kappa", "1.5"},         {"max-pmds", "2"},          {"smooth", "off"},     {"time-limit", "inf"},
+      {"seed", "18446744073709551615"}};
+  ASSERT_EQ(other.size(), plannerSettingTable().size()) << "a new setting needs a value here";
+  for (const auto& [flag, value] : other) {
+    PlannerParameters p;
+    settingNamed(flag).set(p, value);
+    EXPECT_EQ(settingNamed(flag).get(p), value);
+    EXPECT_NO_THROW(p.check()) << flag;
+    for (const PlannerSetting& s : plannerSettingTable())
+      if (s.flag != flag) EXPECT_EQ(s.get(p), s.get(PlannerParameters{})) << flag << " changed " << s.flag;
+  }
+}
+
+TEST(PlannerSettingTable, MalformedTextNamesTheFlag) {
+  const std::pair<const char*, const char*> bad[] = {
+      {"rho-a", "nan"},     {"rho-a", "0.1x"},   {"rho-a", ""},         {"neighbours", "-1"}, {"neighbours", "2.5"},
+      {"seed", "-1"},       {"seed", "1e3"},     {"arm-trials", "4294967296"}, {"smooth", "yes"},
+      {"rho-a-growth", "Factorial"}, {"time-limit", "1e999"}};
+  for (const auto& [flag, text] : bad) {
+    PlannerParameters p;
+    try {
+      settingNamed(flag).set(p, text);
+      ADD_FAILURE() << "--" << flag << " accepted '" << text << "'";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), std::string("--") + flag);
+      EXPECT_NE(e.message().find(text), std::string::npos) << e.message();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pmdplan
