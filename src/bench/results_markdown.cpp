@@ -106,8 +106,9 @@ std::string summaryMarkdown(const std::vector<std::vector<RunSummary>>& byTask, 
     }
     md += "\n";
   }
-  md += "\nRatios: the other planner's median over pmd's (above 1: pmd is faster). Best OMPL planner: the one with the "
-        "most successes on the task, then the lowest median.\n\n";
+  md += "\nRatios: the other planner's median over pmd's (above 1: pmd is faster).";
+  if (withOmpl) md += " Best OMPL planner: the one with the most successes on the task, then the lowest median.";
+  md += "\n\n";
   return md;
 }
 
