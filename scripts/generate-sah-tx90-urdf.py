@@ -189,26 +189,39 @@ palm_size = [PALM[1] - PALM[0], PALM[3] - PALM[2], PALM[5] - PALM[4]]
 link("palm", [(trans(*palm_centre), box(palm_size))])
 
 PROXIMAL, MEDIUM, DISTAL_TIP = 67.8, 30.0, 29.5  # mm
-RADIUS = {"proximal": 0.0115, "medium": 0.0105, "distal": 0.0100, "tip": 0.010, "knuckle": 0.0125}
+# Finger cross-sections (docs/robot_model.md, "Collision geometry"): the real hand's proximal
+# phalanx is about 37 mm thick from back to pad, its abduction block about 40 x 33 x 25 mm (along
+# the finger x across the finger x along the palm normal). The block's 33 mm is taken as the
+# finger's width: the proximal phalanx is a capsule of that diameter about the joint axis line plus
+# a palmar pad that brings its thickness to 37 mm. The medium phalanx keeps the older sizes (no
+# published cross-section), the distal one its published 10 mm fingertip radius.
+FINGER_WIDTH, PROXIMAL_THICKNESS = 33.0, 37.0  # mm
+ABDUCTION_BLOCK = (40.0, 33.0, 25.0)  # mm, in the knuckle frame: along the finger, width, palm normal
+RADIUS = {"proximal": FINGER_WIDTH / 2000, "medium": 0.0105, "distal": 0.0100, "tip": 0.010}
+PROXIMAL_PAD_DEPTH = (PROXIMAL_THICKNESS - FINGER_WIDTH / 2) / 1000  # m below the joint axis line
 ABDUCTION, PROXIMAL_LIMITS, MEDIUM_LIMITS = (-15, 15), (-4, 75), (4, 75)
 
 def finger(name, parent, base):
     """One finger from its base frame (the authors' frames, flexion turned to positive)."""
     joint(f"{name}_abduction", "revolute", parent, f"{name}_knuckle", base, "0 0 1", ABDUCTION, velocity=math.radians(360))
-    link(f"{name}_knuckle", [(identity(), sphere(RADIUS["knuckle"]))])
+    # The abduction block, centred on the crossing of the abduction and proximal flexion axes.
+    link(f"{name}_knuckle", [(identity(), box([v / 1000 for v in ABDUCTION_BLOCK]))])
     # Kautham flexes about -z of these frames; our flexion is positive, so the axes point along -z.
     joint(f"{name}_proximal", "revolute", f"{name}_knuckle", f"{name}_proximal_link", mm(rot_x(-90)), "0 0 -1", PROXIMAL_LIMITS, velocity=math.radians(360))
     # Phalanges: a capsule about the joint axis line plus a pad on the palmar side (-y of these
-    # frames, where flexion moves), which makes them about as thick as the published cross-section
-    # (proximal about 37 mm) where a grasp touches the object.
+    # frames, where flexion moves). The proximal pad, as wide as the finger, spans 26..52 mm of the
+    # 67.8 mm phalanx: toward both joints the phalanx narrows to the capsule, so that the real
+    # hand's full flexion stays free (flexed to 75 deg the pad clears the palm's top, and a fully
+    # curled medium and distal phalanx clears the pad; tests/tasks/hand_self_collision_test.cpp).
     link(f"{name}_proximal_link", capsule([0, 0, 0], [PROXIMAL / 1000, 0, 0], RADIUS["proximal"]) +
-         [(trans(0.036, -0.010, 0), box([0.052, 0.020, 0.020]))])
+         [(trans(0.039, -PROXIMAL_PAD_DEPTH / 2, 0), box([0.026, PROXIMAL_PAD_DEPTH, FINGER_WIDTH / 1000]))])
     joint(f"{name}_medium", "revolute", f"{name}_proximal_link", f"{name}_medium_link", mm(trans(PROXIMAL, 0, 0)), "0 0 -1", MEDIUM_LIMITS, velocity=math.radians(360))
     link(f"{name}_medium_link", capsule([0, 0, 0], [MEDIUM / 1000, 0, 0], RADIUS["medium"]) +
          [(trans(0.015, -0.008, 0), box([0.022, 0.016, 0.019]))])
     joint(f"{name}_distal", "revolute", f"{name}_medium_link", f"{name}_distal_link",
           mm(matmul(trans(MEDIUM, 0, 0), rot_z(-90))), "0 0 -1", MEDIUM_LIMITS, mimic=f"{name}_medium", velocity=math.radians(360))
-    # The fingertip point (0, 29.5, 0) of the distal frame is the centre of a 10 mm sphere.
+    # The fingertip point (0, 29.5, 0) of the distal frame is the centre of a 10 mm sphere, which reaches
+    # 39.5 mm (the distal mesh's pad 39.3); a box fills the pad side of the phalanx.
     link(f"{name}_distal_link", [(along([0, 0, 0], [0, DISTAL_TIP / 1000, 0])[0], cylinder(RADIUS["distal"], DISTAL_TIP / 1000)),
                                  (trans(0, DISTAL_TIP / 1000, 0), sphere(RADIUS["tip"])),
                                  (trans(0.00625, 0.01675, 0), box([0.0125, 0.0255, 0.017]))], "tip")

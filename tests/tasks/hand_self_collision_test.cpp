@@ -2,7 +2,10 @@
 // into the index finger is not.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "pmdplan/collision/exact_collision_checker.hpp"
+#include "pmdplan/core/random_source.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan {
@@ -44,6 +47,20 @@ TEST(HandSelfCollision, AFullyOpenHandIsFree) {
   EXPECT_TRUE(report.free()) << describe(report);
 }
 
+// The real hand bends each finger through its whole flexion range: one finger flexed at a time,
+// proximal and medium at any pair of their limits, touches nothing of its own hand.
+TEST(HandSelfCollision, EachFingerFlexedAloneAtItsLimitsIsFree) {
+  const Task task = robotAlone();
+  ExactCollisionChecker checker(task);
+  const auto& model = *task.robot;
+  for (const std::string finger : {"index", "middle", "ring"})
+    for (double proximal : {-4.0, 75.0})
+      for (double medium : {4.0, 75.0}) {
+        const auto report = checker.check(withHand(model, {{finger + "_proximal", proximal}, {finger + "_medium", medium}}));
+        EXPECT_TRUE(report.free()) << finger << " " << proximal << "/" << medium << ": " << describe(report);
+      }
+}
+
 TEST(HandSelfCollision, EveryPublishedStartAndGoalHandIsFree) {
   const Task alone = robotAlone();
   ExactCollisionChecker checker(alone);
@@ -72,6 +89,72 @@ TEST(HandSelfCollision, TheThumbDrivenIntoTheIndexFingerCollides) {
   for (const auto& [a, b] : report.pairs)
     thumbIndex |= (a.rfind("thumb", 0) == 0 && b.rfind("index", 0) == 0) || (a.rfind("index", 0) == 0 && b.rfind("thumb", 0) == 0);
   EXPECT_TRUE(thumbIndex) << describe(report);
+}
+
+bool reportsPair(const CollisionReport& report, const std::string& fingerA, const std::string& fingerB) {
+  for (const auto& [a, b] : report.pairs)
+    if ((a.rfind(fingerA, 0) == 0 && b.rfind(fingerB, 0) == 0) || (a.rfind(fingerB, 0) == 0 && b.rfind(fingerA, 0) == 0)) return true;
+  return false;
+}
+
+// Adjacent fingers, straight, turned toward each other about their abduction axes: the index
+// finger's positive abduction spreads it toward +y (away from the middle finger), so the index
+// turns negative and the middle positive; the ring finger mirrors the index.
+TEST(HandSelfCollision, AdjacentFingersCollideWhenBothAdductedToTheirLimits) {
+  const Task task = robotAlone();
+  ExactCollisionChecker checker(task);
+  const auto& model = *task.robot;
+  const auto straight = withHand(model, {});
+  EXPECT_FALSE(reportsPair(checker.check(straight), "index", "middle")) << describe(checker.check(straight));
+  EXPECT_FALSE(reportsPair(checker.check(straight), "middle", "ring")) << describe(checker.check(straight));
+  const auto indexMiddle = withHand(model, {{"index_abduction", 15}, {"middle_abduction", -15}});
+  EXPECT_TRUE(reportsPair(checker.check(indexMiddle), "index", "middle")) << describe(checker.check(indexMiddle));
+  const auto middleRing = withHand(model, {{"middle_abduction", 15}, {"ring_abduction", -15}});
+  EXPECT_TRUE(reportsPair(checker.check(middleRing), "middle", "ring")) << describe(checker.check(middleRing));
+}
+
+// Spread apart, the same fingers stay clear: the contact above comes from the adduction.
+TEST(HandSelfCollision, AdjacentFingersSpreadApartAreFree) {
+  const Task task = robotAlone();
+  ExactCollisionChecker checker(task);
+  const auto& model = *task.robot;
+  const auto spread = withHand(model, {{"index_abduction", -15}, {"ring_abduction", 15}});
+  const auto report = checker.check(spread);
+  EXPECT_TRUE(report.free()) << describe(report);
+}
+
+/// The smallest symmetric adduction (degrees, 0.25 steps) at which two adjacent straight fingers touch.
+double firstContactAdduction(ExactCollisionChecker& checker, const RobotModel& model, const std::string& a, const std::string& b) {
+  for (double angle = 0.0; angle <= 15.0; angle += 0.25)
+    if (reportsPair(checker.check(withHand(model, {{a + "_abduction", angle}, {b + "_abduction", -angle}})), a, b)) return angle;
+  return 1e9;
+}
+
+// The measured effect of the finger thickness (docs/robot_model.md): the adduction at which the
+// index and middle fingers first touch, and the share of hands drawn uniformly over the whole
+// hand box (arm fixed) that collide with themselves. The bounds are those of the real hand's
+// thickness: fingers 25 mm wide, 40 mm apart, touch well before the 15 degree limit.
+TEST(HandSelfCollision, ThickFingersTouchAtRealisticAdductionAndFillTheHandBox) {
+  const Task task = robotAlone();
+  ExactCollisionChecker checker(task);
+  const auto& model = *task.robot;
+  const double touch = firstContactAdduction(checker, model, "index", "middle");
+  RandomSource random(1);
+  constexpr int kSamples = 4000;
+  int colliding = 0;
+  for (int s = 0; s < kSamples; ++s) {
+    Configuration q = withHand(model, {});
+    for (int i : model.group("hand")) {
+      const auto& j = model.activeJoints()[static_cast<std::size_t>(i)];
+      q[i] = random.uniform(j.lower, j.upper);
+    }
+    colliding += !checker.check(q).free();
+  }
+  const double share = static_cast<double>(colliding) / kSamples;
+  std::printf("index and middle first touch at %.2f deg adduction each; %.1f %% of %d full-box hands self-collide\n", touch,
+              100.0 * share, kSamples);
+  EXPECT_LT(touch, 15.0);
+  EXPECT_GT(share, 0.0);
 }
 
 }  // namespace
