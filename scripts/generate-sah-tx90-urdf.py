@@ -231,8 +231,10 @@ def finger(name, parent, base):
 joint("thumb_base", "revolute", "palm", "thumb_base_link", mm(trans(-3, 27.1, 0)), "0 0 -1", (0, 90), velocity=math.radians(360))
 # The thumb-base block (published bounds x -27.3..20.0, y 18.5..111.0, z 0.7..101.3 in the palm frame),
 # expressed in the joint's frame.
-# Its y extent stops at 97 mm (published 111) to leave the thumb's knuckle, at y 114, free to turn.
-TB = (-27.3 + 3, 20.0 + 3, 18.5 - 27.1, 97.0 - 27.1, 0.7, 101.3)
+# Its y extent stops at 92 mm (published 111) to leave the thumb's knuckle, at y 114, free to turn:
+# 5.5 mm short of the proximal phalanx's capsule (radius half the finger width) around it.
+THUMB_BASE_Y_END = 114.0 - FINGER_WIDTH / 2 - 5.5
+TB = (-27.3 + 3, 20.0 + 3, 18.5 - 27.1, THUMB_BASE_Y_END - 27.1, 0.7, 101.3)
 link("thumb_base_link", [(trans((TB[0] + TB[1]) / 2000, (TB[2] + TB[3]) / 2000, (TB[4] + TB[5]) / 2000),
                           box([(TB[1] - TB[0]) / 1000, (TB[3] - TB[2]) / 1000, (TB[5] - TB[4]) / 1000]))])
 finger("thumb", "thumb_base_link", mm(matmul(trans(-6, 86.9, 97), rot_axis((0.419, -0.419, 0.805), 102.31))))
