@@ -54,7 +54,7 @@ TEST_F(TaskErrors, UnknownTopLevelKey) {
 TEST_F(TaskErrors, APregraspNeedsATarget) {
   const std::string withPregrasp = std::string(kValidToyTask) + "pregrasp:\n  joints: {wrist: 0.2, shoulder: -0.5, elbow: 1.0}\n";
   const auto error = errorFor(replaceOnce(withPregrasp, "target: can\n", ""));
-  expectField(error, "pregrasp", "  joints: {wrist: 0.2");
+  expectField(error, "pregrasp", "  joints: {wrist: 0.2, shoulder");
   EXPECT_THAT(error.message(), HasSubstr("target"));
 }
 
