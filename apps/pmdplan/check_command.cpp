@@ -1,12 +1,15 @@
-// `pmdplan check [TASK] [--json]`: are the task's start and goal valid, where is the palm, and is
-// the straight joint-space segment between them free at the motion tolerance?
+// `pmdplan check [TASK] [--json]`: are the task's start and goal valid (or is the goal a grasp of
+// the target), how far is each from the obstacles (clearance, or penetration depth), where is the
+// palm, and is the straight joint-space segment between them free at the motion tolerance?
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include "command_registry.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
+#include "pmdplan/collision/grasp_contact.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/world/task.hpp"
@@ -33,8 +36,11 @@ nlohmann::json configurationJson(ExactCollisionChecker& checker, const Configura
   const auto& model = checker.model();
   if (model.palmLink() < 0) throw InputError(model.urdfPath().string(), "end_effector", "the robot names no palm link");
   const Eigen::Isometry3d palm = checker.kinematics().linkPoses(q)[static_cast<std::size_t>(model.palmLink())];
+  const auto clearance = checker.clearance(q);
   return {{"valid", report.free()},
           {"collisions", pairsJson(report)},
+          {"clearance_mm", clearance ? nlohmann::json(1000.0 * clearance->metres) : nlohmann::json()},
+          {"nearest", clearance ? nlohmann::json{clearance->pair.first, clearance->pair.second} : nlohmann::json()},
           {"palm_position", vectorJson(palm.translation())},
           {"palm_z_axis", vectorJson(palm.linear().col(2))}};
 }
@@ -47,6 +53,13 @@ std::string describe(const std::string& label, const nlohmann::json& c) {
                 c["valid"].get<bool>() ? "valid" : "IN COLLISION", p[0].get<double>(), p[1].get<double>(),
                 p[2].get<double>(), z[0].get<double>(), z[1].get<double>(), z[2].get<double>());
   std::string text = line;
+  if (!c["clearance_mm"].is_null()) {
+    const double mm = c["clearance_mm"].get<double>();
+    std::snprintf(line, sizeof line, "\n         %s %.2f mm (%s - %s)", mm < 0.0 ? "penetration" : "clearance", std::abs(mm),
+                  c["nearest"][0].get<std::string>().c_str(), c["nearest"][1].get<std::string>().c_str());
+    text += line;
+  }
+  if (c.contains("grasp")) text += "\n         grasps the target " + c["grasp"].get<std::string>() + ": planned as an approach, then closing";
   for (const auto& pair : c["collisions"]) text += "\n         collides: " + pair[0].get<std::string>() + " - " + pair[1].get<std::string>();
   return text;
 }
@@ -57,7 +70,8 @@ int run(const Options& o) {
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
   const auto start = configurationJson(checker, task.start);
-  const auto goal = configurationJson(checker, task.goal);
+  auto goal = configurationJson(checker, task.goal);
+  if (classifyGoal(checker, task).contact == GoalContact::GraspsTarget) goal["grasp"] = *task.target;
   const auto line = segments.inspect(checker, task.start, task.goal);
   nlohmann::json straight = {{"free", line.free},
                              {"first_collision", line.firstCollision ? nlohmann::json(*line.firstCollision) : nlohmann::json()},

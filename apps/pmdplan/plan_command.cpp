@@ -29,16 +29,12 @@ struct Options {
   std::string synergies;
   PlannerSettingOptions settings;
   double toleranceMm = 1.0;
+  double graspClearanceMm = 1000.0 * GraspSettings{}.clearance;
+  double openingStep = GraspSettings{}.openingStep;
   std::string output;
   std::string csv;
   bool json = false;
 };
-
-std::string pairsText(const CollisionReport& report) {
-  std::string text;
-  for (const auto& [a, b] : report.pairs) text += (text.empty() ? "" : ", ") + a + " - " + b;
-  return text;
-}
 
 int run(const Options& o) {
   const auto mode = parseHandSamplingMode(o.planner);
@@ -48,11 +44,9 @@ int run(const Options& o) {
   const auto checkerKind = parseCheckerKind(o.checker);
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
-  for (const auto& [label, q] : {std::pair{"start", &task.start}, std::pair{"goal", &task.goal}}) {
-    const auto report = checking.exact().check(*q);
-    if (!report.free())
-      throw InputError(task.file.string(), label, std::string("the ") + label + " configuration is in collision: " + pairsText(report));
-  }
+  // The goal may grasp the target (planTask checks it and refuses other contact).
+  if (const auto report = checking.exact().check(task.start); !report.free())
+    throw InputError(task.file.string(), "start", "the start configuration is in collision: " + pairsText(report));
 
   const std::filesystem::path synergyFile =
       o.synergies.empty() ? dataDirectory() / "synergies" / (task.robot->name() + "_default.yaml") : std::filesystem::path(o.synergies);
@@ -63,6 +57,13 @@ int run(const Options& o) {
   options.parameters = resolvePlannerSettings(o.settings, *mode);
   options.synergies = synergies ? &*synergies : nullptr;
   const PlannerParameters& parameters = options.parameters;
+  options.grasp.clearance = o.graspClearanceMm / 1000.0;
+  options.grasp.openingStep = o.openingStep;
+  try {
+    options.grasp.check();
+  } catch (const InputError& e) {
+    throw InputError("", "--" + e.field(), e.message());
+  }
   ProgressLine progress("planning " + task.name);
   TaskPlanningResult result;
   try {
@@ -82,7 +83,8 @@ int run(const Options& o) {
 
   const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
   if (stats.solved()) {
-    PathFile file{task.name, o.planner, parameters.seed, task.robot->activeJointNames(), result.path, mimicRelations(*task.robot), stats};
+    PathFile file{task.name, o.planner, parameters.seed, task.robot->activeJointNames(), result.path, result.closingFrom,
+                  mimicRelations(*task.robot), stats};
     writePathFile(output, file);
     if (!o.csv.empty()) writePathCsv(o.csv, file.jointNames, file.points);
   }
@@ -95,6 +97,10 @@ int run(const Options& o) {
     std::printf("  %zu samples (hand-arm draws) from %zu arm trials, %zu roadmap nodes, max trials %zu, final rho_a %.4f\n",
                 stats.samples, stats.armTrials, stats.roadmapNodes, stats.maxTrials, stats.finalArmHalfSize);
     std::printf("  %zu path nodes, length %.3f (normalised)\n", stats.pathNodes, stats.pathLength);
+    if (result.grasp)
+      std::printf("  grasp of %s: approach to a pre-grasp (%s, %.1f mm from it), then closing (points %zu-%zu)\n",
+                  task.target->c_str(), result.grasp->derived ? "the goal hand opened" : "the task's pregrasp",
+                  1000.0 * result.grasp->clearance, *result.closingFrom, result.path.size() - 1);
     std::printf("  path written to %s\n", output.string().c_str());
   } else {
     std::printf("%s: not solved (%s) after %.1f s, %zu samples, %zu roadmap nodes\n", task.name.c_str(),
@@ -111,6 +117,8 @@ const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD ro
   app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
   app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
   addPlannerSettingOptions(app, o->settings);
+  app.add_option("--grasp-clearance-mm", o->graspClearanceMm, "A grasp goal's derived pre-grasp clears the target by this much");
+  app.add_option("--opening-step", o->openingStep, "Step of the pre-grasp search, a fraction of the way to the open hand");
   app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
   app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
   app.add_flag("--json", o->json, "Print the statistics as JSON");

@@ -1,4 +1,5 @@
-// `pmdplan validate TASK PATH.json`: an independent check of a path with the exact checker.
+// `pmdplan validate TASK PATH.json`: an independent check of a path with the exact checker; a
+// grasp path's closing phase with the grasp rule (hand-target contact allowed, nothing else).
 #include <nlohmann/json.hpp>
 
 #include <iostream>
@@ -27,16 +28,21 @@ int run(const Options& o) {
     throw InputError(o.path, "joint_names", "the path's joints do not match the active joints of robot '" + task.robot->name() + "'");
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
-  const auto result = validatePath(checker, segments, file.points, task.start, task.goal);
+  const auto result = validateTaskPath(checker, segments, task, file.points, file.closingFrom);
   if (o.json) {
     auto pairs = nlohmann::json::array();
     for (const auto& [a, b] : result.collisions.pairs) pairs.push_back({a, b});
-    std::cout << nlohmann::json{{"valid", result.valid}, {"states_checked", result.statesChecked}, {"collisions", pairs},
+    std::cout << nlohmann::json{{"valid", result.valid},
+                                {"states_checked", result.statesChecked},
+                                {"closing_from", file.closingFrom ? nlohmann::json(*file.closingFrom) : nlohmann::json()},
+                                {"collisions", pairs},
                                 {"problems", result.problems}}.dump(2)
               << "\n";
   } else {
     std::cout << o.path << ": " << (result.valid ? "valid" : "INVALID") << " (" << file.points.size() << " points, "
-              << result.statesChecked << " states checked at " << o.toleranceMm << " mm)\n";
+              << result.statesChecked << " states checked at " << o.toleranceMm << " mm"
+              << (file.closingFrom ? "; approach to point " + std::to_string(*file.closingFrom) + ", then closing on the target" : "")
+              << ")\n";
     for (const auto& p : result.problems) std::cout << "  " << p << "\n";
   }
   return result.valid ? 0 : 1;

@@ -29,7 +29,7 @@ RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord
   record.nodesByHandDimension = s.nodesByHandDimension;
   record.roadmapNodes = s.roadmapNodes;
   record.collisionChecks = s.collisionChecks();
-  if (record.solved) assessPath(bench, result.path, record);
+  if (record.solved) assessPath(bench, result.path, record, result.closingFrom);
   else record.failure = "not solved: " + plannerStatusName(s.status);
   return record;
 }
@@ -69,12 +69,13 @@ RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run,
                                                : runPmdRoadmap(bench, planner, record, parameters);
 }
 
-void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record) {
+void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record,
+                std::optional<std::size_t> closingFrom) {
   record.pathNodes = path.size();
   record.pathLength = path.empty() ? 0.0 : pathLength(path, bench.space());
   if (!path.empty()) record.humanLikeness = measureHumanLikeness(path, bench.space(), bench.synergies(), bench.synergySlots());
   const PathValidation validation =
-      validatePath(bench.validationChecker(), bench.validationSegments(), path, bench.task().start, bench.task().goal);
+      validateTaskPath(bench.validationChecker(), bench.validationSegments(), bench.task(), path, closingFrom);
   record.valid = validation.valid;
   if (!validation.valid)
     record.failure = "invalid path: " + (validation.problems.empty() ? std::string("rejected by validation") : validation.problems.front());

@@ -59,6 +59,24 @@ bool shapesCollide(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, cons
   return result.isCollision();
 }
 
+/// Distance between two shapes, or minus their penetration depth when they overlap. Whether they
+/// overlap is the collision test's answer; the depth is FCL's signed distance, which only its
+/// libccd solver computes (EPA) for these shapes; a depth it misses counts as touching (0).
+double signedDistance(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, const PlacedGeometry& b,
+                      const Eigen::Isometry3d& poseB, const fcl::CollisionRequestd& collisionRequest,
+                      const fcl::DistanceRequestd& distanceRequest) {
+  fcl::CollisionResultd contact;
+  fcl::collide(a.geometry.get(), poseA, b.geometry.get(), poseB, collisionRequest, contact);
+  fcl::DistanceRequestd request = distanceRequest;
+  if (contact.isCollision()) {
+    request.enable_signed_distance = true;
+    request.gjk_solver_type = fcl::GST_LIBCCD;
+  }
+  fcl::DistanceResultd result;
+  fcl::distance(a.geometry.get(), poseA, b.geometry.get(), poseB, request, result);
+  return contact.isCollision() ? std::min(result.min_distance, 0.0) : std::max(result.min_distance, 0.0);
+}
+
 }  // namespace
 
 ExactCollisionChecker::ExactCollisionChecker(const Task& task)
@@ -239,6 +257,24 @@ double ExactCollisionChecker::distanceToObstacle(const Configuration& q, const s
                     g.obstacles[o].pose, g.distanceRequest, result);
       best = std::min(best, result.min_distance);
     }
+  }
+  return best;
+}
+
+std::optional<Clearance> ExactCollisionChecker::clearance(const Configuration& q, const std::optional<std::string>& obstacleName) {
+  const auto& g = *geometry_;
+  kinematics_.linkPoses(q, poses_);
+  std::optional<Clearance> best;
+  for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
+    if (obstacleName && task_.obstacles[o].name != *obstacleName) continue;
+    for (std::size_t l = 0; l < g.links.size(); ++l)
+      for (const auto& shape : g.links[l]) {
+        // A capsule's second form is asked against boxes only, as in the collision test.
+        if (shape.againstBoxesOnly && g.obstacles[o].geometry->getNodeType() != fcl::GEOM_BOX) continue;
+        const double d = signedDistance(shape, poses_[l] * shape.pose, g.obstacles[o], g.obstacles[o].pose, g.request,
+                                        g.distanceRequest);
+        if (!best || d < best->metres) best = Clearance{d, {model_.links()[l].name, task_.obstacles[o].name}};
+      }
   }
   return best;
 }

@@ -12,16 +12,11 @@ void addPairs(PathValidation& result, const CollisionReport& report) {
       result.collisions.pairs.push_back(pair);
 }
 
-std::string pairText(const CollisionReport& report) {
-  std::string text;
-  for (const auto& [a, b] : report.pairs) text += (text.empty() ? "" : ", ") + a + " - " + b;
-  return text;
-}
-
 }  // namespace
 
 PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker& segments,
-                            const std::vector<Configuration>& path, const Configuration& start, const Configuration& goal) {
+                            const std::vector<Configuration>& path, const Configuration& start, const Configuration& goal,
+                            std::optional<ClosingPhase> closing) {
   PathValidation result;
   const auto& model = checker.model();
   const auto fail = [&](std::string problem) {
@@ -38,19 +33,37 @@ PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker
   if ((path.back() - goal).cwiseAbs().maxCoeff() > kEndTolerance) fail("the last point is not the task's goal");
   for (std::size_t i = 0; i < path.size(); ++i)
     if (!model.withinLimits(path[i])) fail("point " + std::to_string(i) + " is outside the joint limits");
+  if (closing && (closing->from == 0 || closing->from + 1 >= path.size() || !closing->rule))
+    fail("the closing phase must start after the first point and before the last");
   if (!result.valid) return result;
+  const auto closingCheck = [&](const Configuration& q) { return closing->rule->forbidden(checker.check(q)); };
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const auto inspection = segments.inspect(checker, path[i], path[i + 1]);
+    const bool closingSegment = closing && i >= closing->from;
+    const auto inspection = closingSegment ? segments.inspect(closingCheck, path[i], path[i + 1])
+                                           : segments.inspect(checker, path[i], path[i + 1]);
     result.statesChecked += inspection.statesChecked;
     if (inspection.free) continue;
-    char where[160];
-    std::snprintf(where, sizeof where, "segment %zu (%zu -> %zu): collides at %.1f %%: ", i, i, i + 1,
-                  100.0 * *inspection.firstCollision);
-    fail(where + pairText(inspection.collisions));
+    char where[200];
+    std::snprintf(where, sizeof where, "segment %zu (%zu -> %zu%s): collides at %.1f %%: ", i, i, i + 1,
+                  closingSegment ? ", closing" : closing ? ", approach" : "", 100.0 * *inspection.firstCollision);
+    fail(where + pairsText(inspection.collisions));
     addPairs(result, inspection.collisions);
   }
   std::sort(result.collisions.pairs.begin(), result.collisions.pairs.end());
   return result;
+}
+
+PathValidation validateTaskPath(ExactCollisionChecker& checker, const SegmentChecker& segments, const Task& task,
+                                const std::vector<Configuration>& path, std::optional<std::size_t> closingFrom) {
+  if (!closingFrom) return validatePath(checker, segments, path, task.start, task.goal);
+  if (!task.target) {
+    PathValidation result;
+    result.valid = false;
+    result.problems.push_back("the path has a closing phase, but the task names no target that the hand may touch");
+    return result;
+  }
+  const GraspContactRule rule(task);
+  return validatePath(checker, segments, path, task.start, task.goal, ClosingPhase{*closingFrom, &rule});
 }
 
 }  // namespace pmdplan

@@ -32,6 +32,11 @@ bool SegmentChecker::isValid(const Configuration& from, const Configuration& to)
 
 SegmentInspection SegmentChecker::inspect(ExactCollisionChecker& checker, const Configuration& from,
                                           const Configuration& to) const {
+  return inspect([&checker](const Configuration& q) { return checker.check(q); }, from, to);
+}
+
+SegmentInspection SegmentChecker::inspect(const std::function<CollisionReport(const Configuration&)>& check,
+                                          const Configuration& from, const Configuration& to) const {
   SegmentInspection result;
   const long n = bound_.intervals(from, to, tolerance_);
   result.statesNeeded = n + 1;
@@ -39,7 +44,7 @@ SegmentInspection SegmentChecker::inspect(ExactCollisionChecker& checker, const 
     const double t = static_cast<double>(i) / static_cast<double>(n);
     const Configuration q = from + (to - from) * t;
     ++result.statesChecked;
-    auto report = checker.check(q);
+    auto report = check(q);
     if (!report.free()) {
       result.free = false;
       result.firstCollision = t;

@@ -31,6 +31,14 @@ std::string formatPathFile(const PathFile& path, const PathFileOptions& options)
     points.push_back(std::move(point));
   }
   document["points"] = std::move(points);
+  if (path.closingFrom) {
+    const std::size_t k = *path.closingFrom, last = path.points.size() - 1;
+    if (k == 0 || k >= last) throw std::invalid_argument("formatPathFile: the closing phase must start inside the path");
+    nlohmann::ordered_json phases;
+    phases["approach"] = nlohmann::ordered_json::array({0, k});
+    phases["closing"] = nlohmann::ordered_json::array({k, last});
+    document["phases"] = std::move(phases);
+  }
   nlohmann::ordered_json mimic = nlohmann::ordered_json::object();
   for (const MimicRelation& relation : path.mimic)
     mimic[relation.joint] = nlohmann::ordered_json::array({relation.source, relation.multiplier, relation.offset});
@@ -43,6 +51,30 @@ void writePathFile(const std::filesystem::path& file, const PathFile& path, cons
   writeFileAtomically(file, formatPathFile(path, options));
 }
 
+namespace {
+
+/// `{"approach": [0, k], "closing": [k, n - 1]}` with 0 < k < n - 1: returns k.
+std::size_t readPhases(const nlohmann::json& value, const json_reading::Place& place, std::size_t points) {
+  using namespace json_reading;
+  requireObject(value, place);
+  checkKeys(value, place, {"approach", "closing"}, {"approach", "closing"});
+  std::size_t bounds[2][2];
+  const char* names[2] = {"approach", "closing"};
+  for (int p = 0; p < 2; ++p) {
+    const Place phase = place.key(names[p]);
+    const nlohmann::json& range = requireArray(member(value, names[p]), phase);
+    if (range.size() != 2) phase.fail("expected [first point, last point]");
+    for (int e = 0; e < 2; ++e) bounds[p][e] = readUnsigned(range[static_cast<std::size_t>(e)], phase.index(static_cast<std::size_t>(e)));
+  }
+  const std::size_t k = bounds[0][1];
+  if (bounds[0][0] != 0 || bounds[1][0] != k || bounds[1][1] + 1 != points || k == 0 || k + 1 >= points)
+    place.fail("expected {\"approach\": [0, k], \"closing\": [k, " + std::to_string(points - 1) +
+               "]} with 0 < k < " + std::to_string(points - 1) + " (the pre-grasp's index)");
+  return k;
+}
+
+}  // namespace
+
 PathFile parsePathFile(const std::string& text, const std::string& file) {
   using namespace json_reading;
   nlohmann::json document;
@@ -53,7 +85,7 @@ PathFile parsePathFile(const std::string& text, const std::string& file) {
   }
   const Place root{file, ""};
   requireObject(document, root);
-  checkKeys(document, root, {"task", "planner", "seed", "joint_names", "points", "mimic", "statistics"},
+  checkKeys(document, root, {"task", "planner", "seed", "joint_names", "points", "phases", "mimic", "statistics"},
             {"task", "planner", "seed", "joint_names", "points", "mimic", "statistics"});
 
   PathFile path;
@@ -90,6 +122,8 @@ PathFile parsePathFile(const std::string& text, const std::string& file) {
       q[static_cast<Eigen::Index>(k)] = readFinite(positions[k], positionsPlace.index(k));
     path.points.push_back(std::move(q));
   }
+
+  if (document.contains("phases")) path.closingFrom = readPhases(member(document, "phases"), root.key("phases"), path.points.size());
 
   const Place mimicPlace = root.key("mimic");
   const nlohmann::json& mimic = requireObject(member(document, "mimic"), mimicPlace);

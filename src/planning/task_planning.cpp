@@ -1,5 +1,8 @@
 #include "pmdplan/planning/task_planning.hpp"
 
+#include <chrono>
+
+#include "pmdplan/planning/path_smoothing.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 
 namespace pmdplan {
@@ -9,13 +12,24 @@ TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const
   const PlanningSpace space = planningSpaceFromRobot(*task.robot);
   options.parameters.check();
   auto sampler = makeHandSampler(options.mode, space, options.synergies, options.parameters.pmdBox);
-  PmdRoadmapPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
-  planner.setStartAndGoal(task.start, task.goal);
-  if (progress) planner.setProgressCallback(std::move(progress));
   TaskPlanningResult result;
+  const auto began = std::chrono::steady_clock::now();
+  result.grasp = graspApproach(task, checking.exact(), checking.tolerance(), options.grasp);
+  const double graspSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  PmdRoadmapPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
+  planner.setStartAndGoal(task.start, result.grasp ? result.grasp->pregrasp : task.goal);
+  if (progress) planner.setProgressCallback(std::move(progress));
   result.status = planner.solve();
   result.path = planner.path();
   result.statistics = planner.statistics();
+  // Finding the pre-grasp is part of solving the task.
+  if (result.grasp) result.statistics.planningTime += graspSeconds;
+  if (result.grasp && result.statistics.solved()) {
+    result.closingFrom = result.path.size() - 1;
+    result.path.push_back(task.goal);
+    result.statistics.pathNodes = result.path.size();
+    result.statistics.pathLength = pathLength(result.path, space);
+  }
   return result;
 }
 

@@ -61,7 +61,7 @@ Task loadTask(const std::filesystem::path& file) {
   const std::filesystem::path taskDirectory = std::filesystem::absolute(file).parent_path();
 
   root.requireMapWithKeys(
-      {"name", "description", "robot", "base", "target", "obstacles", "start", "goal"},
+      {"name", "description", "robot", "base", "target", "obstacles", "start", "goal", "pregrasp"},
       "a task map");
   Task task;
   task.file = file;
@@ -93,6 +93,10 @@ Task loadTask(const std::filesystem::path& file) {
   const std::string configurationForm = "{joints_deg: {...}} or {joints: {...}}";
   task.start = readJointValues(root.child("start", configurationForm), *task.robot);
   task.goal = readJointValues(root.child("goal", configurationForm), *task.robot);
+  if (const auto pregrasp = root.optionalChild("pregrasp")) {
+    if (!task.target) pregrasp->fail("a pregrasp needs the task's target (the obstacle the goal grasps): add `target:`");
+    task.pregrasp = readJointValues(*pregrasp, *task.robot);
+  }
   return task;
 }
 

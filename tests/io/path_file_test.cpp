@@ -57,6 +57,7 @@ void expectSamePath(const PathFile& a, const PathFile& b, bool timings) {
       EXPECT_EQ(std::signbit(a.points[i][k]), std::signbit(b.points[i][k]));
   }
   EXPECT_EQ(a.mimic, b.mimic);
+  EXPECT_EQ(a.closingFrom, b.closingFrom);
   const PlanningStatistics& s = a.statistics;
   const PlanningStatistics& t = b.statistics;
   EXPECT_EQ(s.status, t.status);
@@ -101,6 +102,25 @@ TEST(PathFile, HasTheKeysOfTheIssueInOrder) {
   EXPECT_EQ(json["points"][0]["positions"].size(), 3u);
   EXPECT_FALSE(json["statistics"].contains("planning_time_s"));
   EXPECT_EQ(json["statistics"]["collision_checks"], 17100);
+}
+
+// A grasp path (docs/grasp_goals.md): the phases sit after the points and round-trip.
+TEST(PathFile, AGraspPathMarksItsApproachAndClosing) {
+  PathFile path = samplePath();
+  path.closingFrom = 1;
+  const std::string text = formatPathFile(path);
+  const nlohmann::ordered_json json = nlohmann::ordered_json::parse(text);
+  std::vector<std::string> keys;
+  for (auto item = json.begin(); item != json.end(); ++item) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{"task", "planner", "seed", "joint_names", "points", "phases", "mimic", "statistics"}));
+  EXPECT_EQ(json["phases"], nlohmann::ordered_json::parse(R"({"approach": [0, 1], "closing": [1, 2]})"));
+  const PathFile back = parsePathFile(text, "grasp.json");
+  expectSamePath(path, back, false);
+  EXPECT_EQ(formatPathFile(back), text);
+  for (std::size_t k : {0u, 2u}) {
+    path.closingFrom = k;
+    EXPECT_THROW(formatPathFile(path), std::invalid_argument) << k;
+  }
 }
 
 TEST(PathFile, WritesAtomicallyAndReadsBack) {
@@ -186,6 +206,12 @@ TEST(PathFile, BadFilesNameTheFileAndTheKey) {
   expectBadFile([](J& j) { j["statistics"]["nodes_by_hand_dimension"]["two"] = 1; },
                 "statistics.nodes_by_hand_dimension.two");
   expectBadFile([](J& j) { j["statistics"]["bogus"] = 1; }, "statistics.bogus");
+  expectBadFile([](J& j) { j["phases"] = J::array(); }, "phases");
+  expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, 1]})"); }, "phases.closing");
+  expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, 1], "closing": [2, 2]})"); }, "phases");
+  expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, 2], "closing": [2, 2]})"); }, "phases");
+  expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, 1], "closing": [1]})"); }, "phases.closing");
+  expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, -1], "closing": [1, 2]})"); }, "phases.approach[1]");
 }
 
 TEST(PathFile, NotJsonOrNotAnObject) {

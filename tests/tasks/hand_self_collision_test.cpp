@@ -132,8 +132,8 @@ double firstContactAdduction(ExactCollisionChecker& checker, const RobotModel& m
 
 // The measured effect of the finger thickness (docs/robot_model.md): the adduction at which the
 // index and middle fingers first touch, and the share of hands drawn uniformly over the whole
-// hand box (arm fixed) that collide with themselves. The bounds are those of the real hand's
-// thickness: fingers 25 mm wide, 40 mm apart, touch well before the 15 degree limit.
+// hand box (arm fixed) that collide with themselves. The bounds hold for the real hand's thickness
+// (4.25 degrees, 66 %) and fail for the thinner first model (5.75 degrees, 57 %).
 TEST(HandSelfCollision, ThickFingersTouchAtRealisticAdductionAndFillTheHandBox) {
   const Task task = robotAlone();
   ExactCollisionChecker checker(task);
@@ -153,8 +153,8 @@ TEST(HandSelfCollision, ThickFingersTouchAtRealisticAdductionAndFillTheHandBox) 
   const double share = static_cast<double>(colliding) / kSamples;
   std::printf("index and middle first touch at %.2f deg adduction each; %.1f %% of %d full-box hands self-collide\n", touch,
               100.0 * share, kSamples);
-  EXPECT_LT(touch, 15.0);
-  EXPECT_GT(share, 0.0);
+  EXPECT_LE(touch, 5.0);
+  EXPECT_GT(share, 0.6);
 }
 
 }  // namespace

@@ -51,6 +51,19 @@ TEST_F(TaskErrors, UnknownTopLevelKey) {
   EXPECT_THAT(error.message(), HasSubstr("obstacles"));  // lists the allowed keys
 }
 
+TEST_F(TaskErrors, APregraspNeedsATarget) {
+  const std::string withPregrasp = std::string(kValidToyTask) + "pregrasp:\n  joints: {wrist: 0.2, shoulder: -0.5, elbow: 1.0}\n";
+  const auto error = errorFor(replaceOnce(withPregrasp, "target: can\n", ""));
+  expectField(error, "pregrasp", "  joints: {wrist: 0.2, shoulder");
+  EXPECT_THAT(error.message(), HasSubstr("target"));
+}
+
+TEST_F(TaskErrors, APregraspIsAConfigurationLikeTheGoal) {
+  const auto error = errorFor(std::string(kValidToyTask) + "pregrasp:\n  joints: {wrist: 0.2, shoulder: -0.5}\n");
+  EXPECT_THAT(error.field(), StartsWith("pregrasp"));
+  EXPECT_THAT(error.message(), HasSubstr("elbow"));
+}
+
 TEST_F(TaskErrors, UnknownKeyInBase) {
   const auto error = errorFor(replaceOnce(kValidToyTask, "rpy_deg: [0, 0, 90]}", "rpy: [0, 0, 90]}"));
   expectField(error, "base.rpy", "base:");

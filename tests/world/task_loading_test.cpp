@@ -31,6 +31,14 @@ TEST_F(TaskLoading, ReadsNameDescriptionRobotAndFile) {
   EXPECT_EQ(task.robot->dof(), 3);
 }
 
+TEST_F(TaskLoading, ThePregraspIsOptionalAndReadLikeTheGoal) {
+  EXPECT_FALSE(load(kValidToyTask).pregrasp);
+  const Task task = load(std::string(kValidToyTask) + "pregrasp:\n  joints_deg: {wrist: 10, shoulder: -20, elbow: 30}\n");
+  ASSERT_TRUE(task.pregrasp);
+  EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("shoulder")], -20 * kDegree, 1e-12);
+  EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("wrist")], 10 * kDegree, 1e-12);
+}
+
 TEST_F(TaskLoading, BasePoseFollowsXyzAndYaw) {
   const Task task = load(kValidToyTask);
   EXPECT_TRUE(task.base.translation().isApprox(Eigen::Vector3d(0.1, 0.2, 0.0)));

@@ -7,6 +7,7 @@
 // Validation: every returned path, ours too, is checked again by validatePath on a separate exact
 // checker at the same tolerance; an invalid path is a failure, never a success.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "pmdplan/bench/planner_roster.hpp"
@@ -22,7 +23,9 @@ namespace pmdplan {
 RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters);
 
 /// Validates the solved run's path and measures it into `record` (path nodes, length,
-/// human-likeness, valid); an invalid path sets `failure` to the validation's first problem.
-void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record);
+/// human-likeness, valid); an invalid path sets `failure` to the validation's first problem. A
+/// grasp path's closing phase (from point `closingFrom`) is validated with the grasp rule.
+void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record,
+                std::optional<std::size_t> closingFrom = {});
 
 }  // namespace pmdplan

@@ -13,4 +13,7 @@ struct CollisionReport {
   bool free() const { return pairs.empty(); }
 };
 
+/// The pairs as text: "a - b, c - d".
+std::string pairsText(const CollisionReport& report);
+
 }  // namespace pmdplan

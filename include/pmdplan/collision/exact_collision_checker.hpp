@@ -4,6 +4,7 @@
 // independent GJK (GST_INDEP; the libccd default gives wrong box-capsule and box-box answers in
 // FCL 0.7); meshes are triangle surfaces.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,13 @@
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan {
+
+/// How far the robot is from an obstacle: the smallest distance, or when they overlap minus the
+/// deepest penetration (FCL's contact depth), with the link and obstacle it was found for.
+struct Clearance {
+  double metres = 0.0;
+  CollisionPair pair;
+};
 
 class ExactCollisionChecker : public StateValidator {
 public:
@@ -31,6 +39,9 @@ public:
   /// Smallest distance between any of `links` and the obstacle `obstacleName` (negative or zero
   /// when they touch). Throws std::invalid_argument for unknown names.
   double distanceToObstacle(const Configuration& q, const std::vector<int>& links, const std::string& obstacleName);
+  /// The robot's clearance from the obstacles (or only from `obstacleName`); nullopt when the
+  /// task has no (such) obstacle or no link has geometry.
+  std::optional<Clearance> clearance(const Configuration& q, const std::optional<std::string>& obstacleName = {});
 
   const RobotModel& model() const { return model_; }
   const ForwardKinematics& kinematics() const { return kinematics_; }

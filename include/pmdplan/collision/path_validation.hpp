@@ -1,10 +1,13 @@
 #pragma once
 // An independent check of a planned path with the exact checker: every point within the limits
-// and free, the ends equal to the task's start and goal, every segment free at the tolerance.
+// and free, the ends equal to the task's start and goal, every segment free at the tolerance. A
+// grasp path's closing phase is checked with the grasp rule (grasp_contact.hpp).
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "pmdplan/collision/exact_collision_checker.hpp"
+#include "pmdplan/collision/grasp_contact.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 
 namespace pmdplan {
@@ -18,7 +21,22 @@ struct PathValidation {
   CollisionReport collisions;
 };
 
+/// The closing phase of a grasp path: the segments from point `from` (the pre-grasp) to the end,
+/// where `rule` allows hand-target contact.
+struct ClosingPhase {
+  std::size_t from = 0;
+  const GraspContactRule* rule = nullptr;
+};
+
+/// Before `closing->from` (or everywhere without it) every pair counts.
 PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker& segments,
-                            const std::vector<Configuration>& path, const Configuration& start, const Configuration& goal);
+                            const std::vector<Configuration>& path, const Configuration& start, const Configuration& goal,
+                            std::optional<ClosingPhase> closing = {});
+
+/// validatePath against a task: a path whose closing phase starts at point `closingFrom` (the path
+/// file's phases) is checked with the rule of the task's target; a task without a target makes
+/// such a path invalid.
+PathValidation validateTaskPath(ExactCollisionChecker& checker, const SegmentChecker& segments, const Task& task,
+                                const std::vector<Configuration>& path, std::optional<std::size_t> closingFrom);
 
 }  // namespace pmdplan

@@ -2,6 +2,7 @@
 // Straight joint-space segments checked at a resolution from SweptDistanceBound, so that no point
 // of the robot moves more than `tolerance` between two checked states. Interior states are visited
 // in bisection (Van der Corput) order, which finds a collision early on average.
+#include <functional>
 #include <optional>
 
 #include "pmdplan/collision/collision_report.hpp"
@@ -36,6 +37,9 @@ public:
   /// Every state from `from` to `to`, endpoints included, in order along the segment, stopping at
   /// the first collision and reporting its pairs (for `pmdplan check` and `pmdplan validate`).
   SegmentInspection inspect(ExactCollisionChecker& checker, const Configuration& from, const Configuration& to) const;
+  /// The same with another state check: `check(q)` reports the pairs that count at q.
+  SegmentInspection inspect(const std::function<CollisionReport(const Configuration&)>& check, const Configuration& from,
+                            const Configuration& to) const;
 
 private:
   StateValidator& states_;

@@ -7,6 +7,7 @@
 //     "seed": 1,
 //     "joint_names": ["a1", ...],                 active joints, configuration order
 //     "points": [{"positions": [0.1, ...]}, ...], radians (metres for prismatic joints)
+//     "phases": {"approach": [0, k], "closing": [k, n - 1]},  only for a grasp goal: point indices
 //     "mimic": {"index_distal": ["index_medium", 1, 0], ...},  joint -> [source, multiplier, offset]
 //     "statistics": {...}                          see statistics_json.hpp
 //   }
@@ -16,6 +17,7 @@
 // and seed give a byte-identical file.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,9 @@ struct PathFile {
   std::uint64_t seed = 0;
   std::vector<std::string> jointNames;
   std::vector<Configuration> points;
+  /// A grasp path's phases (docs/grasp_goals.md): the approach is points 0..k, the closing k..n-1,
+  /// with k = closingFrom (the pre-grasp). Absent when the goal touches nothing.
+  std::optional<std::size_t> closingFrom;
   std::vector<MimicRelation> mimic;
   PlanningStatistics statistics;
 };
@@ -58,7 +63,8 @@ void writePathFile(const std::filesystem::path& file, const PathFile& path, cons
 
 /// Reads and checks a path file. Every problem is an InputError naming `file` and the key
 /// ("points[3].positions", "statistics.samples", ...): not JSON, unknown or missing keys, wrong
-/// types, fewer than two points, a point with the wrong number of positions, duplicate joints.
+/// types, fewer than two points, a point with the wrong number of positions, duplicate joints,
+/// phases that do not split the points into an approach and a closing of at least one segment each.
 PathFile parsePathFile(const std::string& text, const std::string& file);
 PathFile readPathFile(const std::filesystem::path& file);
 

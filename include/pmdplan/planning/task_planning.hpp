@@ -1,10 +1,13 @@
 #pragma once
 // One planner run on a task: the state and motion checks of the chosen checker, the hand sampler
 // of the chosen mode and the PMD roadmap planner, wired the same way for the CLI and the
-// benchmarks.
+// benchmarks. A goal that grasps the task's target is planned in two phases (grasp_approach.hpp):
+// the roadmap planner's path to the pre-grasp (the approach), then the closing segment to the goal.
+#include <optional>
 #include <vector>
 
 #include "pmdplan/collision/collision_checking.hpp"
+#include "pmdplan/planning/grasp_approach.hpp"
 #include "pmdplan/planning/hand_sampling_mode.hpp"
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
 #include "pmdplan/world/task.hpp"
@@ -15,17 +18,21 @@ struct TaskPlanningOptions {
   HandSamplingMode mode = HandSamplingMode::Synergy;
   PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   const SynergyModel* synergies = nullptr;  ///< required for the Synergy mode
+  GraspSettings grasp;                       ///< how a pre-grasp is derived for a grasp goal
 };
 
 struct TaskPlanningResult {
   PlannerStatus status = PlannerStatus::NotRun;
   std::vector<Configuration> path;
   PlanningStatistics statistics;
+  std::optional<GraspApproach> grasp;       ///< set when the goal grasps the target
+  std::optional<std::size_t> closingFrom;   ///< the pre-grasp's index in `path` (closing phase from there)
 };
 
 /// `checking` must have been built for `task`; its tolerance is the motion checks' resolution.
 /// Throws InputError for a model that does not fit the robot's hand (field as the sampler names
-/// it, no file) and for bad parameters.
+/// it, no file), for bad parameters, and (naming the task file) for a goal that touches anything
+/// but the target with the hand or whose pre-grasp cannot be found.
 TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningOptions& options,
                             ProgressCallback progress = {});
 
