@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/core/input_error.hpp"
@@ -86,6 +87,7 @@ int run(const Options& o) {
 const CommandRegistrar registrar{"check", "Check a task: start and goal validity, palm poses, the straight segment",
                                  [](CLI::App& app) {
                                    auto o = std::make_shared<Options>();
+                                   addPackagePathOption(app);
                                    app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
                                    app.add_flag("--json", o->json, "Print JSON instead of text");
                                    app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
@@ -56,7 +57,7 @@ int run(const Options& o) {
   }
 
   const std::filesystem::path synergyFile =
-      o.synergies.empty() ? dataDirectory() / "synergies" / (task.robot->name() + "_default.yaml") : std::filesystem::path(o.synergies);
+      o.synergies.empty() && *mode == HandSamplingMode::Synergy ? shippedSynergyModelPath(task.robot->name()) : std::filesystem::path(o.synergies);
   std::optional<SynergyModel> synergies;
   if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
   TaskPlanningOptions options;
@@ -112,6 +113,7 @@ int run(const Options& o) {
 
 const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD roadmap planner", [](CLI::App& app) {
   auto o = std::make_shared<Options>();
+  addPackagePathOption(app);
   app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
   app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
   app.add_option("--checker", o->checker, "fast (default: sphere model, FCL on flagged pairs; the same answers) or exact (FCL only)");
