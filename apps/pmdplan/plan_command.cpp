@@ -15,6 +15,7 @@
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/io/robot_mimic.hpp"
 #include "pmdplan/io/statistics_json.hpp"
+#include "pmdplan/planning/robot_planning_space.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
@@ -49,6 +50,7 @@ int run(const Options& o) {
   const Task task = loadTaskByName(o.task);
   const auto checkerKind = parseCheckerKind(o.checker);
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
+  planningSpaceFromRobot(*task.robot);  // a robot without groups is told how to get them before anything else
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
   for (const auto& [label, q] : {std::pair{"start", &task.start}, std::pair{"goal", &task.goal}}) {
     const auto report = checking.exact().check(*q);

@@ -90,7 +90,8 @@ std::vector<std::pair<int, double>> readValues(const YamlField& field, const Rob
   }
   if (!missing.empty()) {
     values.fail("missing joint" + std::string(missing.size() > 1 ? "s " : " ") +
-                listNames(missing) + "; every active joint appears exactly once");
+                listNames(missing) + "; every active joint appears exactly once (joints the task keeps still "
+                "go under `fixed: {joints_deg: {...}}` instead)");
   }
   return out;
 }
