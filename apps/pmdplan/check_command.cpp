@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "robot_setup.hpp"
 #include "package_path_option.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
@@ -32,7 +33,8 @@ nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 nlohmann::json configurationJson(ExactCollisionChecker& checker, const Configuration& q) {
   const auto report = checker.check(q);
   const auto& model = checker.model();
-  if (model.palmLink() < 0) throw InputError(model.urdfPath().string(), "end_effector", "the robot names no palm link");
+  if (model.palmLink() < 0) throw InputError(model.urdfPath().string(), "end_effector",
+                     "the robot names no palm link; write its SRDF with " + robotInitHint(model.urdfPath()));
   const Eigen::Isometry3d palm = checker.kinematics().linkPoses(q)[static_cast<std::size_t>(model.palmLink())];
   return {{"valid", report.free()},
           {"collisions", pairsJson(report)},
