@@ -166,5 +166,25 @@ TEST(OwnRobotCli, HeldJointsStayWhereTheTaskPutsThem) {
   EXPECT_EQ(contents(dir.path() / "toy.path.json").find("spare_"), std::string::npos);
 }
 
+TEST(OwnRobotCli, PostureCsvErrorsNameTheFileTheLineAndTheFix) {
+  const TempDir dir;
+  makeToyHand(dir, "--hand-only --relative-meshes --postures 50");
+  const auto urdf = dir.path() / "toy_hand/urdf/toy_hand.urdf";
+  ASSERT_EQ(runCli(dir, "robot init " + quoted(urdf) + " --palm palm --samples 200").exitCode, 0);
+  const std::string robot = " --robot " + quoted(urdf);
+  const auto noColumn = runCli(dir, "synergies --postures " + quoted(dir.write("a.csv", "thumb_rotate,thumb_flex\n1,2\n")) + robot);
+  EXPECT_EQ(noColumn.exitCode, 2);
+  EXPECT_NE(noColumn.err.find("a.csv: line 1: no column for hand joint 'finger1_spread'"), std::string::npos) << noColumn.err;
+  const std::string header = "thumb_rotate,thumb_flex,finger1_spread,finger1_flex,finger2_spread,finger2_flex\n";
+  const auto outside = runCli(dir, "synergies --postures " + quoted(dir.write("b.csv", header + "0,0,0,0,0,0\n0,120,0,0,0,0\n")) + robot);
+  EXPECT_EQ(outside.exitCode, 2);
+  EXPECT_NE(outside.err.find("b.csv: line 3, column thumb_flex: 120 deg is outside the joint limits 0 .. 90 deg"), std::string::npos)
+      << outside.err;
+  // No own-axis joint named: the output says which option picks one.
+  const auto fitted = runCli(dir, "synergies --postures " + quoted(dir.path() / "toy_hand_postures.csv") + robot);
+  ASSERT_EQ(fitted.exitCode, 0) << fitted.err;
+  EXPECT_NE(fitted.out.find("--own-axis JOINT"), std::string::npos) << fitted.out;
+}
+
 }  // namespace
 }  // namespace pmdplan
