@@ -24,13 +24,6 @@ std::vector<std::string> cells(const std::string& line) {
   return out;
 }
 
-std::string shortNumber(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value;
-  return text.str();
-}
-
 std::string jointList(const JointLimits& hand) {
   std::string text;
   for (const auto& joint : hand) text += (text.empty() ? "" : ",") + joint.name;
@@ -77,7 +70,7 @@ Eigen::MatrixXd readPostureCsv(const std::filesystem::path& file, const JointLim
       const double radians = *value * scale;
       if (radians < joint.lower - 1e-9 || radians > joint.upper + 1e-9)
         throw InputError(name, field, values[c] + " " + unitName + " is outside the joint limits " +
-                                          shortNumber(joint.lower / scale) + " .. " + shortNumber(joint.upper / scale) + " " + unitName);
+                                          messageNumberText(joint.lower / scale) + " .. " + messageNumberText(joint.upper / scale) + " " + unitName);
       posture[columnJoint[c]] = std::clamp(radians, joint.lower, joint.upper);
     }
     rows.push_back(std::move(posture));
