@@ -164,6 +164,16 @@ TEST(OwnRobotCli, HeldJointsStayWhereTheTaskPutsThem) {
                                                           "spare_elbow: 45, spare_wrist: 0, head_pan: 20}}\n"));
   planAndValidate(dir, held, "");
   EXPECT_EQ(contents(dir.path() / "toy.path.json").find("spare_"), std::string::npos);
+  // The viewer poses the held joints where the task holds them and gets the robot's meshes.
+  const auto view = runCli(dir, "view " + quoted(dir.path() / "toy.path.json") + " --task " + quoted(held) + " --out " +
+                                    quoted(dir.path() / "viewer"));
+  ASSERT_EQ(view.exitCode, 0) << view.err;
+  const std::string data = contents(dir.path() / "viewer" / "viewer-data.js");
+  const auto heldAt = data.find("\"held_joints\"");
+  ASSERT_NE(heldAt, std::string::npos);
+  EXPECT_NE(data.find("\"spare_shoulder\": 0.5235987755982", heldAt), std::string::npos);
+  EXPECT_NE(data.find("\"../meshes/spare_link2.stl\": \"robot-meshes/"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::is_directory(dir.path() / "viewer" / "robot-meshes"));
 }
 
 TEST(OwnRobotCli, PostureCsvErrorsNameTheFileTheLineAndTheFix) {

@@ -60,7 +60,7 @@ export function createRobot(scene, robotData, base, notes, onChange = () => {}) 
     };
     const url = meshFiles[path];
     if (!url) {
-      failed('not found when the folder was written');
+      failed('not found when pmdplan view wrote the folder: a package:// path needs --package-path or PMDPLAN_PACKAGE_PATH');
       return;
     }
     loadMeshFile(url, manager, material, (object) => {
