@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "planner_setting_options.hpp"
 #include "pmdplan/bench/bench_options.hpp"
 #include "pmdplan/bench/campaign.hpp"
@@ -171,6 +172,7 @@ int run(const CommandLine& c) {
 const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seeded runs, tables, CSV, OMPL log, plot (MPI-aware)",
                                  [](CLI::App& app) {
   auto c = std::make_shared<CommandLine>();
+  addPackagePathOption(app);
   app.add_option("task", c->tasks, "Built-in task names or task files (default: the five paper tasks)");
   app.add_option("--planners", c->planners, "Comma-separated planners: " + knownPlannerNames() + " (default pmd)");
   app.add_option("--runs", c->runs, "Runs per task and planner; run i uses seed S + i (default 10)");

@@ -8,6 +8,8 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "robot_setup.hpp"
+#include "package_path_option.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/grasp_contact.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
@@ -34,7 +36,8 @@ nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 nlohmann::json configurationJson(ExactCollisionChecker& checker, const Configuration& q) {
   const auto report = checker.check(q);
   const auto& model = checker.model();
-  if (model.palmLink() < 0) throw InputError(model.urdfPath().string(), "end_effector", "the robot names no palm link");
+  if (model.palmLink() < 0) throw InputError(model.urdfPath().string(), "end_effector",
+                     "the robot names no palm link; write its SRDF with " + robotInitHint(model.urdfPath()));
   const Eigen::Isometry3d palm = checker.kinematics().linkPoses(q)[static_cast<std::size_t>(model.palmLink())];
   const auto clearance = checker.clearance(q);
   return {{"valid", report.free()},
@@ -100,6 +103,7 @@ int run(const Options& o) {
 const CommandRegistrar registrar{"check", "Check a task: start and goal validity, palm poses, the straight segment",
                                  [](CLI::App& app) {
                                    auto o = std::make_shared<Options>();
+                                   addPackagePathOption(app);
                                    app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
                                    app.add_flag("--json", o->json, "Print JSON instead of text");
                                    app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
@@ -99,6 +100,7 @@ const CommandRegistrar registrar{
       synthCommand->add_option("--calibration-out", synth->calibrationOutput,
                                "Calibration file to write (default: the recording's name with .calibration.yaml)");
       synthCommand->add_option("--mapping", synth->mapping, "Hand mapping to invert (default data/glove/cyberglove22_to_sah.yaml)");
+      addPackagePathOption(*synthCommand);
       synthCommand->add_option("--robot", synth->robot, "Built-in robot name or .urdf file (default sah_tx90)");
 
       auto convert = std::make_shared<ConvertOptions>();

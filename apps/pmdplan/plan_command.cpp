@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "planner_setting_options.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/core/data_directory.hpp"
@@ -15,6 +16,7 @@
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/io/robot_mimic.hpp"
 #include "pmdplan/io/statistics_json.hpp"
+#include "pmdplan/planning/robot_planning_space.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
@@ -43,13 +45,14 @@ int run(const Options& o) {
   const Task task = loadTaskByName(o.task);
   const auto checkerKind = parseCheckerKind(o.checker);
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
+  planningSpaceFromRobot(*task.robot);  // a robot without groups is told how to get them before anything else
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
   // The goal may grasp the target (planTask checks it and refuses other contact).
   if (const auto report = checking.exact().check(task.start); !report.free())
     throw InputError(task.file.string(), "start", "the start configuration is in collision: " + pairsText(report));
 
   const std::filesystem::path synergyFile =
-      o.synergies.empty() ? dataDirectory() / "synergies" / (task.robot->name() + "_default.yaml") : std::filesystem::path(o.synergies);
+      o.synergies.empty() && *mode == HandSamplingMode::Synergy ? shippedSynergyModelPath(task.robot->name()) : std::filesystem::path(o.synergies);
   std::optional<SynergyModel> synergies;
   if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
   TaskPlanningOptions options;
@@ -111,6 +114,7 @@ int run(const Options& o) {
 
 const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD roadmap planner", [](CLI::App& app) {
   auto o = std::make_shared<Options>();
+  addPackagePathOption(app);
   app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
   app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
   app.add_option("--checker", o->checker, "fast (default: convex parts and lane kernels, FCL only near contact; the same answers) or exact (FCL only)");

@@ -1,6 +1,7 @@
 // `pmdplan synergies REC [--calibration F] [--mapping F] [-o model.yaml] [--json]`: a glove
 // recording through calibration, mapping and PCA to a synergy model; prints the cumulative
 // variance (the paper's Fig. 10) and the correlations of the paper's Fig. 7 joint pairs.
+// `pmdplan synergies --postures P.csv --robot URDF`: the same PCA from hand joint postures.
 // `pmdplan synergies --from-graspit FILE.xml --joints j1,j2,… -o model.yaml`: imports GraspIt
 // eigengrasps. `pmdplan synergies --show model.yaml`: checks and prints a model file.
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include <memory>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
@@ -19,6 +21,7 @@
 #include "pmdplan/synergy/figure7_joint_pairs.hpp"
 #include "pmdplan/synergy/graspit_eigengrasp_import.hpp"
 #include "pmdplan/synergy/hand_mapping_file.hpp"
+#include "pmdplan/synergy/posture_csv.hpp"
 #include "pmdplan/synergy/recording_analysis.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 
@@ -38,6 +41,8 @@ struct Options {
   std::vector<std::string> graspitJoints;
   std::string show;
   std::string plots;
+  std::string postures;
+  std::string units = "deg";
 };
 
 
@@ -132,6 +137,34 @@ int runGraspIt(const Options& o) {
   }
   printModel(imported.model);
   for (const auto& note : imported.notes) std::cout << "note: " << note << "\n";
+  if (!o.output.empty()) std::cout << "wrote " << o.output << "\n";
+  return 0;
+}
+
+int runPostures(const Options& o) {
+  const JointLimits hand = RobotModel::loadByNameOrPath(o.robot).groupJoints("hand");
+  if (o.units != "deg" && o.units != "rad") throw InputError("", "--units", "expected deg or rad, got '" + o.units + "'");
+  const Eigen::MatrixXd postures = readPostureCsv(o.postures, hand, o.units == "deg" ? PostureUnit::Degrees : PostureUnit::Radians);
+  SynergyFitOptions fitOptions;
+  fitOptions.ownAxisJoints = ownAxisJoints(o, hand);
+  const std::string provenance = "hand postures " + fileName(o.postures) + " (" + std::to_string(postures.rows()) +
+                                 " postures); PCA over joints normalised to [0, 1] by the limits of " +
+                                 fileName(std::filesystem::path(o.robot));
+  const SynergyFit fit = fitSynergyModel(postures, hand, fitOptions, {o.postures, "postures", provenance});
+  if (!o.output.empty()) saveSynergyModel(o.output, fit.model);
+  writePlots(o, fit.model, postures, hand);
+  if (o.json) {
+    nlohmann::json out = {{"frames", fit.frames}, {"pca_joint_names", fit.pcaJoints}, {"constant_joints", fit.constantJoints},
+                          {"cumulative_variance", vectorJson(fit.cumulativeVariance)}, {"model", modelJson(fit.model)}};
+    if (!o.output.empty()) out["model_file"] = o.output;
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << o.postures << ": " << fit.frames << " postures of " << hand.size() << " hand joints\n";
+  printModel(fit.model);
+  if (fitOptions.ownAxisJoints.empty())
+    std::cout << "note: no own-axis joint; the paper keeps the thumb's opposition joint out of the PCA as an axis of its "
+                 "own: name it with --own-axis JOINT\n";
   if (!o.output.empty()) std::cout << "wrote " << o.output << "\n";
   return 0;
 }
@@ -231,10 +264,13 @@ int runRecording(const Options& o) {
 }
 
 int run(const Options& o) {
-  const int modes = !o.recording.empty() + !o.graspit.empty() + !o.show.empty();
+  const int modes = !o.recording.empty() + !o.graspit.empty() + !o.show.empty() + !o.postures.empty();
   if (modes != 1)
-    throw InputError("", "REC", "give exactly one of: a recording, --from-graspit FILE.xml, --show MODEL.yaml");
+    throw InputError("", "REC",
+                     "give exactly one of: a glove recording, --postures FILE.csv (hand joint postures, no glove), "
+                     "--from-graspit FILE.xml, --show MODEL.yaml");
   if (!o.show.empty()) return runShow(o);
+  if (!o.postures.empty()) return runPostures(o);
   if (!o.graspit.empty()) return runGraspIt(o);
   return runRecording(o);
 }
@@ -243,6 +279,7 @@ const CommandRegistrar registrar{
     "synergies", "Glove recording -> principal motion directions (or import GraspIt eigengrasps, or show a model)",
     [](CLI::App& app) {
       auto o = std::make_shared<Options>();
+      addPackagePathOption(app);
       app.add_option("recording", o->recording, "Glove recording: CSV, or a raw 'G'-reply stream (.bin/.raw/.serial)");
       app.add_option("--format", o->format, "Recording format: csv, serial or auto (by extension; default)");
       app.add_option("--calibration", o->calibration, "Calibration YAML (default: REC's name with .calibration.yaml)");
@@ -255,6 +292,8 @@ const CommandRegistrar registrar{
       app.add_option("--from-graspit", o->graspit, "Import a GraspIt eigengrasp XML file instead of reading a recording");
       app.add_option("--joints", o->graspitJoints, "With --from-graspit: the robot joint of each dimension, in order")->delimiter(',');
       app.add_option("--show", o->show, "Check and print a synergy model file");
+      app.add_option("--postures", o->postures, "PCA of hand joint postures from a CSV (header: hand joint names; no glove)");
+      app.add_option("--units", o->units, "With --postures: deg (default) or rad");
       app.add_option("--plots", o->plots, "Write the figures as SVG into this folder (Fig. 10 variance; Fig. 7 joint pairs from a recording)");
       return [o] { return run(*o); };
     }};

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "pmdplan/collision/path_validation.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_file.hpp"
@@ -50,6 +51,7 @@ int run(const Options& o) {
 
 const CommandRegistrar registrar{"validate", "Check a path file against a task with the exact checker", [](CLI::App& app) {
   auto o = std::make_shared<Options>();
+  addPackagePathOption(app);
   app.add_option("task", o->task, "Built-in task name or task file")->required();
   app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan")->required();
   app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "command_registry.hpp"
+#include "package_path_option.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/io/static_file_server.hpp"
@@ -68,6 +69,7 @@ const CommandRegistrar registrar{
     "view", "Write a web viewer folder for a path (robot, obstacles, animation, synergies); optionally serve it",
     [](CLI::App& app) {
       auto o = std::make_shared<Options>();
+      addPackagePathOption(app);
       app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan")->required();
       app.add_option("--out", o->out, "Viewer folder to write (default: PATH's name with -viewer, beside it)");
       app.add_option("--serve", o->servePort, "Serve the folder on 127.0.0.1:PORT until stopped (0: any free port)");

@@ -38,7 +38,7 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options) {
   for (const auto& name : options.tasks) tasks.push_back(loadTaskByName(name));
   CampaignInputs inputs;
   const std::filesystem::path file = options.synergies.empty()
-                                         ? dataDirectory() / "synergies" / (tasks.front().robot->name() + "_default.yaml")
+                                         ? shippedSynergyModelPath(tasks.front().robot->name())
                                          : options.synergies;
   inputs.synergies = std::make_unique<SynergyModel>(loadSynergyModel(file));
   inputs.synergyFile = file.string();

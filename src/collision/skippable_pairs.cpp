@@ -42,7 +42,8 @@ bool onDifferentBranches(const RobotModel& model, int linkA, int linkB) {
 std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const SkippablePairParams& params) {
   const auto& links = model.links();
   const std::size_t n = links.size();
-  std::vector<char> adjacent(n * n, 0), touched(n * n, 0);
+  std::vector<char> adjacent(n * n, 0);
+  std::vector<std::size_t> touched(n * n, 0);
   for (std::size_t l = 0; l < n; ++l) {
     const int p = geometricParent(model, static_cast<int>(l));
     if (p >= 0) adjacent[l * n + static_cast<std::size_t>(p)] = adjacent[static_cast<std::size_t>(p) * n + l] = 1;
@@ -52,6 +53,16 @@ std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const Ski
   task.name = "self-collision sampling";
   task.robot = std::shared_ptr<const RobotModel>(&model, [](const RobotModel*) {});
   ExactCollisionChecker checker(task);
+  const auto contacts = [&](const Configuration& q, std::vector<std::size_t>& counts) {
+    for (const auto& [a, b] : checker.check(q).pairs) {
+      const auto ia = static_cast<std::size_t>(model.linkIndex(a));
+      const auto ib = static_cast<std::size_t>(model.linkIndex(b));
+      ++counts[ia * n + ib];
+      if (ia != ib) ++counts[ib * n + ia];
+    }
+  };
+  std::vector<std::size_t> atHome(n * n, 0);
+  if (params.home.size() > 0) contacts(params.home, atHome);
   RandomSource random(params.seed);
   Configuration q(model.dof());
   for (std::size_t s = 0; s < params.samples; ++s) {
@@ -59,37 +70,53 @@ std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const Ski
       const auto& j = model.activeJoints()[static_cast<std::size_t>(i)];
       q[i] = random.uniform(j.lower, j.upper);
     }
-    for (const auto& [a, b] : checker.check(q).pairs) {
-      const auto ia = static_cast<std::size_t>(model.linkIndex(a));
-      const auto ib = static_cast<std::size_t>(model.linkIndex(b));
-      touched[ia * n + ib] = touched[ib * n + ia] = 1;
-    }
+    contacts(q, touched);
   }
 
   std::vector<SkippablePair> pairs;
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b) {
       if (links[a].collisionShapes.empty() || links[b].collisionShapes.empty()) continue;
-      if (adjacent[a * n + b])
+      const std::size_t k = a * n + b;
+      if (adjacent[k])
         pairs.push_back({links[a].name, links[b].name, "Adjacent"});
-      else if (!touched[a * n + b] && !onDifferentBranches(model, static_cast<int>(a), static_cast<int>(b)))
+      else if (atHome[k] > 0)
+        pairs.push_back({links[a].name, links[b].name, "Default"});
+      else if (params.samples > 0 && touched[k] == params.samples)
+        pairs.push_back({links[a].name, links[b].name, "Always"});
+      else if (touched[k] == 0 && !onDifferentBranches(model, static_cast<int>(a), static_cast<int>(b)))
         pairs.push_back({links[a].name, links[b].name, "Never"});
     }
   return pairs;
 }
 
 std::string companionFileText(const RobotModel& model, const std::vector<SkippablePair>& pairs, const std::string& generatedBy) {
+  const int palm = model.palmLink();
+  return companionFileText(model.name(), model.groupDefinitions(),
+                           palm >= 0 ? model.links()[static_cast<std::size_t>(palm)].name : std::string(), pairs, generatedBy);
+}
+
+std::string companionFileText(const std::string& robotName, const std::vector<RobotModel::GroupDefinition>& groups,
+                              const std::string& palmLink, const std::vector<SkippablePair>& pairs,
+                              const std::string& generatedBy) {
+  // XML forbids "--" inside a comment (and a comment ending in "-").
+  std::string comment = generatedBy;
+  for (std::size_t at = comment.find("--"); at != std::string::npos; at = comment.find("--", at)) comment.insert(at + 1, " ");
+  if (!comment.empty() && comment.back() == '-') comment += ' ';
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n<!-- Planning groups and self-collision pairs that may be skipped.\n     "
-      << generatedBy << " -->\n<robot name=\"" << model.name() << "\">\n";
-  for (const auto& [name, joints] : model.groupDefinitions()) {
+      << comment << " -->\n<robot name=\"" << robotName << "\">\n";
+  for (const auto& [name, joints] : groups) {
     out << "  <group name=\"" << name << "\">\n";
     for (const auto& j : joints) out << "    <joint name=\"" << j << "\"/>\n";
     out << "  </group>\n";
   }
-  if (model.palmLink() >= 0)
-    out << "  <end_effector name=\"hand\" parent_link=\"" << model.links()[static_cast<std::size_t>(model.palmLink())].name
-        << "\" group=\"hand\"/>\n";
+  const auto has = [&](const char* group) {
+    return std::any_of(groups.begin(), groups.end(), [&](const auto& g) { return g.first == group; });
+  };
+  if (!palmLink.empty() && has("hand"))
+    out << "  <end_effector name=\"hand\" parent_link=\"" << palmLink << "\" group=\"hand\""
+        << (has("arm") ? " parent_group=\"arm\"" : "") << "/>\n";
   for (const auto& p : pairs)
     out << "  <disable_collisions link1=\"" << p.linkA << "\" link2=\"" << p.linkB << "\" reason=\"" << p.reason << "\"/>\n";
   out << "</robot>\n";

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace pmdplan {
@@ -45,6 +46,13 @@ std::optional<long long> parseWholeNumber(std::string_view text) {
   const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
   if (result.ec != std::errc() || result.ptr != text.data() + text.size()) return std::nullopt;
   return value;
+}
+
+std::string messageNumberText(double value) {
+  std::ostringstream text;
+  text.precision(6);
+  text << value;
+  return text.str();
 }
 
 }  // namespace pmdplan

@@ -59,8 +59,23 @@ Json taskJson(const Task& task, std::vector<ViewerFolderFile>& files) {
               {"obstacles", std::move(obstacles)}};
 }
 
-Json robotJson(const RobotModel& robot) {
-  Json lower = Json::array(), upper = Json::array(), hand = Json::array(), mimic = Json::object();
+/// The robot's visual meshes that resolved, copied into the folder: URDF reference -> folder path.
+Json robotMeshFiles(const RobotModel& robot, std::vector<ViewerFolderFile>& files) {
+  Json meshFiles = Json::object();
+  for (const Link& link : robot.links())
+    for (const VisualMesh& mesh : link.visualMeshes) {
+      if (mesh.file.empty() || meshFiles.contains(mesh.reference)) continue;
+      // Numbered, so meshes of the same file name from different packages do not overwrite each other.
+      const std::string copy = "robot-meshes/" + std::to_string(meshFiles.size()) + "-" + mesh.file.filename().string();
+      files.push_back({mesh.file, copy});
+      meshFiles[mesh.reference] = copy;
+    }
+  return meshFiles;
+}
+
+Json robotJson(const RobotModel& robot, std::vector<ViewerFolderFile>& files) {
+  Json lower = Json::array(), upper = Json::array(), hand = Json::array(), mimic = Json::object(), held = Json::object();
+  for (const auto& [name, value] : robot.heldJoints()) held[name] = value;
   for (const JointLimit& joint : robot.activeJoints()) {
     lower.push_back(joint.lower);
     upper.push_back(joint.upper);
@@ -77,7 +92,9 @@ Json robotJson(const RobotModel& robot) {
               {"lower", std::move(lower)},
               {"upper", std::move(upper)},
               {"hand_joints", std::move(hand)},
-              {"mimic", std::move(mimic)}};
+              {"mimic", std::move(mimic)},
+              {"held_joints", std::move(held)},
+              {"mesh_files", robotMeshFiles(robot, files)}};
 }
 
 Json synergiesJson(const SynergyModel& model, const std::vector<int>& slots, const PathTimeline& timeline,
@@ -133,7 +150,7 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
                              {"task_file", task.file.filename().string()},
                              {"synergy_file", synergies ? Json(sources.synergyFile.filename().string()) : Json()}};
   document["task"] = taskJson(task, data.files);
-  document["robot"] = robotJson(robot);
+  document["robot"] = robotJson(robot, data.files);
   document["path"] = Json{{"planner", path.planner},
                           {"seed", path.seed},
                           {"statistics", statisticsToJson(path.statistics, false)},

@@ -4,6 +4,7 @@
 
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/model/resource_path.hpp"
 #include "urdf_reader.hpp"
 
 namespace pmdplan {
@@ -24,8 +25,8 @@ RobotModel RobotModel::loadBuiltIn(const std::string& name) {
 }
 
 RobotModel RobotModel::loadByNameOrPath(const std::string& nameOrUrdf) {
-  const std::filesystem::path path = nameOrUrdf;
-  if (path.extension() != ".urdf") return loadBuiltIn(nameOrUrdf);
+  if (std::filesystem::path(nameOrUrdf).extension() != ".urdf") return loadBuiltIn(nameOrUrdf);
+  const std::filesystem::path path = resolveResourcePath(nameOrUrdf, std::filesystem::current_path() / "-", "robot");
   const auto srdf = std::filesystem::path(path).replace_extension(".srdf");
   return load(path, std::filesystem::exists(srdf) ? std::optional(srdf) : std::nullopt);
 }
@@ -68,7 +69,8 @@ const std::vector<int>& RobotModel::group(const std::string& groupName) const {
   for (const auto& [name, indices] : groups_)
     if (name == groupName) return indices;
   throw InputError(urdfPath_.string(), "group", "robot '" + name_ + "' has no planning group '" + groupName +
-                                                   "' (define it in the SRDF companion file)");
+                                                   "' (write the SRDF with `pmdplan robot init " + urdfPath_.string() +
+                                                   " --arm J1,J2,... --palm LINK`)");
 }
 
 bool RobotModel::isCollisionPairDisabled(int linkA, int linkB) const {

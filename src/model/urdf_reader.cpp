@@ -12,6 +12,8 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/model/resource_path.hpp"
+#include "srdf_name_matching.hpp"
 
 namespace pmdplan {
 namespace {
@@ -49,17 +51,22 @@ std::optional<Shape> toShape(const urdf::Geometry& geometry, const std::filesyst
       return SphereShape{static_cast<const urdf::Sphere&>(geometry).radius};
     case urdf::Geometry::MESH: {
       const auto& m = static_cast<const urdf::Mesh&>(geometry);
-      std::string file = m.filename;
-      if (file.rfind("file://", 0) == 0) file = file.substr(7);
-      if (file.rfind("package://", 0) == 0)
-        throw InputError(urdf.string(), field, "package:// mesh paths need a ROS workspace; use a path relative to the URDF");
-      std::filesystem::path path = file;
-      if (path.is_relative()) path = urdf.parent_path() / path;
-      if (!std::filesystem::exists(path)) throw InputError(urdf.string(), field, "mesh file not found: " + path.string());
+      const std::filesystem::path path = resolveResourcePath(m.filename, urdf, field + ".mesh.filename");
       return MeshShape{path, Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z)};
     }
   }
   return std::nullopt;
+}
+
+bool hasGroupNamed(const RobotModel& model, const std::string& name) {
+  return std::any_of(model.groupDefinitions().begin(), model.groupDefinitions().end(),
+                     [&](const auto& g) { return g.first == name; });
+}
+
+/// A continuous joint's <limit> counts as a range when it gives lower < upper (urdfdom leaves both
+/// 0 when only effort and velocity are written).
+bool hasLimitRange(const urdf::JointLimitsSharedPtr& limits) {
+  return limits && (limits->lower != 0.0 || limits->upper != 0.0);
 }
 
 }  // namespace
@@ -117,6 +124,18 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
       if (auto shape = toShape(*collision->geometry, urdf, field))
         out.collisionShapes.push_back({*shape, toIsometry(collision->origin)});
     }
+    for (std::size_t i = 0; i < link->visual_array.size(); ++i) {
+      const auto& visual = link->visual_array[i];
+      if (!visual->geometry || visual->geometry->type != urdf::Geometry::MESH) continue;
+      const std::string reference = static_cast<const urdf::Mesh&>(*visual->geometry).filename;
+      VisualMesh mesh{reference, {}};
+      try {
+        mesh.file = resolveResourcePath(reference, urdf, "link[" + link->name + "].visual[" + std::to_string(i) + "]");
+      } catch (const InputError&) {
+        mesh.file.clear();
+      }
+      out.visualMeshes.push_back(std::move(mesh));
+    }
     linkIndex[out.name] = static_cast<int>(model.links_.size());
     model.links_.push_back(std::move(out));
     std::vector<urdf::JointSharedPtr> children = link->child_joints;
@@ -140,7 +159,8 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
       if (j.type != JointType::Fixed) {
         if (!(axis.norm() > 1e-12)) throw InputError(file, field + ".axis", "axis must be a non-zero vector");
         j.axis = axis.normalized();
-        if (j.type == JointType::Continuous) {
+        if (j.type == JointType::Continuous && !hasLimitRange(joint->limits)) {
+          // No range given: one turn, without wrap-around (see docs/bring_your_own_robot.md).
           j.lower = -M_PI;
           j.upper = M_PI;
         } else {
@@ -212,37 +232,94 @@ void RobotModelBuilder::readSrdf(RobotModel& model, const std::filesystem::path&
   const auto* root = document.RootElement();
   if (!root || std::string(root->Name()) != "robot") throw InputError(file, "root element", "expected <robot>");
   const auto line = [](const tinyxml2::XMLElement* e) { return "line " + std::to_string(e->GetLineNum()); };
+  std::vector<std::string> jointNames, linkNames;
+  for (const auto& j : model.joints_) jointNames.push_back(j.name);
+  for (const auto& l : model.links_) linkNames.push_back(l.name);
+  const auto matched = [&](const std::vector<std::string>& names, const char* kind, const char* written,
+                           const tinyxml2::XMLElement* at, const std::string& where) {
+    const std::string name = written ? written : "";
+    const SrdfNameMatch match = matchSrdfName(names, name);
+    if (match.index < 0) throw InputError(file, line(at), where + unmatchedSrdfName(match, kind, name));
+    return match.index;
+  };
   for (const auto* group = root->FirstChildElement("group"); group; group = group->NextSiblingElement("group")) {
     const char* name = group->Attribute("name");
     if (!name) throw InputError(file, line(group), "<group> needs a name");
+    const std::string where = std::string("group '") + name + "': ";
     std::vector<int> jointIndices;  // joints(), converted to active indices once the order is known
-    std::vector<std::string> jointNames;
-    for (const auto* j = group->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
-      const char* jointName = j->Attribute("name");
-      const int idx = jointName ? model.jointIndex(jointName) : -1;
-      if (idx < 0)
-        throw InputError(file, line(j), std::string("group '") + name + "' names unknown joint '" + (jointName ? jointName : "") + "'");
-      jointIndices.push_back(idx);
-      jointNames.emplace_back(jointName);
+    const auto add = [&](int joint) {
+      if (std::find(jointIndices.begin(), jointIndices.end(), joint) == jointIndices.end()) jointIndices.push_back(joint);
+    };
+    // MoveIt's members, in document order: joints, links (their parent joints), chains, subgroups.
+    for (const auto* member = group->FirstChildElement(); member; member = member->NextSiblingElement()) {
+      const std::string kind = member->Name();
+      if (kind == "joint") {
+        add(matched(jointNames, "joint", member->Attribute("name"), member, where));
+      } else if (kind == "link") {
+        const int link = matched(linkNames, "link", member->Attribute("name"), member, where);
+        if (const int joint = model.links_[static_cast<std::size_t>(link)].parentJoint; joint >= 0) add(joint);
+      } else if (kind == "chain") {
+        const int base = matched(linkNames, "link", member->Attribute("base_link"), member, where + "chain base_link: ");
+        const int tip = matched(linkNames, "link", member->Attribute("tip_link"), member, where + "chain tip_link: ");
+        std::vector<int> chain;
+        for (int link = tip; link != base; ) {
+          const int joint = model.links_[static_cast<std::size_t>(link)].parentJoint;
+          if (joint < 0) throw InputError(file, line(member), where + "chain: link '" + linkNames[static_cast<std::size_t>(base)] +
+                                                                   "' is not an ancestor of '" + linkNames[static_cast<std::size_t>(tip)] + "'");
+          chain.push_back(joint);
+          link = model.joints_[static_cast<std::size_t>(joint)].parentLink;
+        }
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) add(*it);
+      } else if (kind == "group") {
+        const char* sub = member->Attribute("name");
+        const auto found = std::find_if(model.groups_.begin(), model.groups_.end(),
+                                        [&](const auto& g) { return sub && g.first == sub; });
+        if (found == model.groups_.end())
+          throw InputError(file, line(member), where + "subgroup '" + (sub ? sub : "") + "' is not defined before it");
+        for (const int joint : found->second) add(joint);
+      }
     }
+    std::vector<std::string> memberNames;
+    for (const int joint : jointIndices) memberNames.push_back(jointNames[static_cast<std::size_t>(joint)]);
     model.groups_.emplace_back(name, std::move(jointIndices));
-    model.groupDefinitions_.emplace_back(name, std::move(jointNames));
+    model.groupDefinitions_.emplace_back(name, std::move(memberNames));
   }
   for (const auto* d = root->FirstChildElement("disable_collisions"); d; d = d->NextSiblingElement("disable_collisions")) {
-    const char* a = d->Attribute("link1");
-    const char* b = d->Attribute("link2");
-    const int ia = a ? model.linkIndex(a) : -1;
-    const int ib = b ? model.linkIndex(b) : -1;
-    if (ia < 0 || ib < 0) throw InputError(file, line(d), "disable_collisions names an unknown link (link1, link2)");
+    const int ia = matched(linkNames, "link", d->Attribute("link1"), d, "disable_collisions link1: ");
+    const int ib = matched(linkNames, "link", d->Attribute("link2"), d, "disable_collisions link2: ");
     model.disabledPairs_.emplace_back(std::min(ia, ib), std::max(ia, ib));
   }
   if (const auto* ee = root->FirstChildElement("end_effector")) {
-    const char* parent = ee->Attribute("parent_link");
-    model.palmLink_ = parent ? model.linkIndex(parent) : -1;
-    if (model.palmLink_ < 0) throw InputError(file, line(ee), "end_effector needs parent_link naming a link of the URDF");
+    model.palmLink_ = matched(linkNames, "link", ee->Attribute("parent_link"), ee, "end_effector parent_link: ");
+    // A MoveIt SRDF names its groups freely (panda_arm, hand): the end effector says which is which.
+    const auto alias = [&](const char* role, const char* attribute) {
+      const char* groupName = ee->Attribute(attribute);
+      if (!groupName || hasGroupNamed(model, role)) return;
+      for (std::size_t g = 0; g < model.groups_.size(); ++g)
+        if (model.groups_[g].first == groupName) {
+          auto joints = model.groups_[g].second;
+          auto names = model.groupDefinitions_[g].second;
+          model.groups_.emplace_back(role, std::move(joints));
+          model.groupDefinitions_.emplace_back(role, std::move(names));
+          return;
+        }
+    };
+    alias("hand", "group");
+    alias("arm", "parent_group");
   }
   std::sort(model.disabledPairs_.begin(), model.disabledPairs_.end());
   model.disabledPairs_.erase(std::unique(model.disabledPairs_.begin(), model.disabledPairs_.end()), model.disabledPairs_.end());
+}
+
+void RobotModelBuilder::reassignActiveOrder(RobotModel& model) {
+  model.activeJoints_.clear();
+  for (auto& joint : model.joints_) joint.activeIndex = -1;
+  for (std::size_t g = 0; g < model.groups_.size(); ++g) {
+    std::vector<int> jointIndices;
+    for (const auto& name : model.groupDefinitions_[g].second) jointIndices.push_back(model.jointIndex(name));
+    model.groups_[g].second = std::move(jointIndices);
+  }
+  assignActiveOrder(model);
 }
 
 void RobotModelBuilder::assignActiveOrder(RobotModel& model) {

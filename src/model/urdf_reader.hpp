@@ -10,6 +10,8 @@ namespace pmdplan {
 class RobotModelBuilder {
 public:
   static RobotModel build(const std::filesystem::path& urdf, const std::optional<std::filesystem::path>& srdf);
+  /// The configuration layout and the groups' active indices again, after joints became fixed.
+  static void reassignActiveOrder(RobotModel& model);
 
 private:
   static void readUrdf(RobotModel& model, const std::filesystem::path& urdf);

@@ -23,8 +23,7 @@ void PlanningSpace::check() const {
   for (const JointLimit& joint : joints)
     if (!std::isfinite(joint.lower) || !std::isfinite(joint.upper) || !(joint.range() > 0.0))
       throw std::invalid_argument("planning space: joint '" + joint.name + "' needs finite limits with lower < upper");
-  if (armIndices.empty() || handIndices.empty())
-    throw std::invalid_argument("planning space: the arm and the hand group must each have a joint");
+  if (handIndices.empty()) throw std::invalid_argument("planning space: the hand group must have a joint");
   std::vector<int> owner(joints.size(), 0);
   auto claim = [&](const std::vector<int>& indices, const char* group) {
     for (const int i : indices) {
@@ -40,7 +39,9 @@ void PlanningSpace::check() const {
   claim(handIndices, "hand");
   for (std::size_t i = 0; i < joints.size(); ++i)
     if (owner[i] == 0)
-      throw std::invalid_argument("planning space: joint '" + joints[i].name + "' is in neither the arm nor the hand group");
+      throw std::invalid_argument("planning space: joint '" + joints[i].name +
+                                  "' is in neither the arm nor the hand group (add it to a group, or hold it "
+                                  "still with the task's `fixed: {joints_deg: {" + joints[i].name + ": VALUE}}`)");
 }
 
 Eigen::VectorXd PlanningSpace::normalise(const Configuration& q) const {

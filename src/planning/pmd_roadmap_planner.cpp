@@ -119,8 +119,12 @@ PmdRoadmapPlanner::HypercubeOutcome PmdRoadmapPlanner::sampleHypercube(double st
       return {std::nullopt, PlannerStatus::SampleLimit};
     if (timeIsUp()) return {std::nullopt, PlannerStatus::TimeLimit};
     ++statistics_.armTrials;
-    ++statistics_.stateChecks;
-    if (!armSampler_->sample(step, armHalfSize, random_, stateValidator_, q)) continue;
+    // A hand alone has no arm to sample (its segment has length 0: the hypercubes at 0 and 1
+    // only, which try c_ini and c_goal in turn).
+    if (!space_.armIndices.empty()) {
+      ++statistics_.stateChecks;
+      if (!armSampler_->sample(step, armHalfSize, random_, stateValidator_, q)) continue;
+    }
     int dimSch = handSampler_->initialDimension();
     for (int h = 0; h < parameters_.handTrials; ++h) {
       if (statistics_.samples >= parameters_.maxSamples) return {std::nullopt, PlannerStatus::SampleLimit};

@@ -8,13 +8,14 @@ namespace pmdplan {
 
 PlanningSpace planningSpaceFromRobot(const RobotModel& model) {
   const std::string file = model.urdfPath().string();
-  for (const char* group : {"arm", "hand"})
-    if (!model.hasGroup(group))
-      throw InputError(file, "groups", std::string("the robot has no \"") + group +
-                                           "\" group; the planner needs an \"arm\" and a \"hand\" group");
+  if (!model.hasGroup("hand"))
+    throw InputError(file, "groups",
+                     "the robot has no \"hand\" group; the planner needs a \"hand\" group (and an \"arm\" group "
+                     "unless the robot is a hand alone): write them with `pmdplan robot init " + file +
+                         " --arm J1,J2,... --palm LINK`");
   PlanningSpace space;
   space.joints = model.activeJoints();
-  space.armIndices = model.group("arm");
+  if (model.hasGroup("arm")) space.armIndices = model.group("arm");
   space.handIndices = model.group("hand");
   try {
     space.check();

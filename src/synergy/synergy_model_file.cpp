@@ -225,4 +225,15 @@ std::filesystem::path defaultSynergyModelPath(const std::string& robotName) {
   return dataDirectory() / "synergies" / (robotName + "_default.yaml");
 }
 
+std::filesystem::path shippedSynergyModelPath(const std::string& robotName) {
+  const auto path = defaultSynergyModelPath(robotName);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw InputError("", "--synergies",
+                     "robot '" + robotName + "' has no shipped synergy model (no " + path.string() +
+                         "): make one with `pmdplan synergies --postures POSTURES.csv --robot URDF -o MODEL.yaml` and pass "
+                         "--synergies MODEL.yaml, or plan without synergies with --planner full");
+  return path;
+}
+
 }  // namespace pmdplan

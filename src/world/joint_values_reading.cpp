@@ -26,12 +26,10 @@ bool isPrismatic(const RobotModel& robot, const std::string& jointName) {
   return index >= 0 && robot.joints()[static_cast<std::size_t>(index)].type == JointType::Prismatic;
 }
 
-}  // namespace
-
-Configuration readJointValues(const YamlField& field, const RobotModel& robot) {
-  const std::string form =
-      "{joints_deg: {joint: degrees, ...}} or {joints: {joint: radians, ...}} listing every "
-      "active joint once";
+/// The values given, by active index; with `every`, each active joint must appear.
+std::vector<std::pair<int, double>> readValues(const YamlField& field, const RobotModel& robot, bool every) {
+  const std::string form = std::string("{joints_deg: {joint: degrees, ...}} or {joints: {joint: radians, ...}} listing ") +
+                           (every ? "every active joint once" : "the joints to hold");
   field.requireMapWithKeys({"joints_deg", "joints"}, form);
   const bool inDegrees = field.has("joints_deg");
   if (inDegrees && field.has("joints")) {
@@ -42,7 +40,7 @@ Configuration readJointValues(const YamlField& field, const RobotModel& robot) {
   const double toInternal = inDegrees ? std::numbers::pi / 180.0 : 1.0;
 
   const JointLimits& limits = robot.activeJoints();
-  Configuration q = Configuration::Constant(robot.dof(), std::nan(""));
+  std::vector<std::pair<int, double>> out;
   std::vector<bool> given(limits.size(), false);
   const std::string mapForm = "a map {joint name: value in " + unit + "}";
   for (const auto& [name, value] : values.mapEntries(mapForm)) {
@@ -57,6 +55,9 @@ Configuration readJointValues(const YamlField& field, const RobotModel& robot) {
                      " (mimic) and is derived from it; list only active joints: " +
                      listNames(robot.activeJointNames()));
         }
+        if (robot.heldJointValue(name))
+          value.fail("'" + name + "' is held by the task's `fixed:` entry; list only active joints: " +
+                     listNames(robot.activeJointNames()));
         value.fail("'" + name + "' is a fixed joint; list only active joints: " +
                    listNames(robot.activeJointNames()));
       }
@@ -80,17 +81,34 @@ Configuration readJointValues(const YamlField& field, const RobotModel& robot) {
     // so that normalised coordinates stay inside [0, 1].
     internal = std::clamp(internal, limit.lower, limit.upper);
     given[slot] = true;
-    q[index] = internal;
+    out.emplace_back(index, internal);
   }
+  if (!every) return out;
   std::vector<std::string> missing;
   for (std::size_t i = 0; i < limits.size(); ++i) {
     if (!given[i]) missing.push_back(limits[i].name);
   }
   if (!missing.empty()) {
     values.fail("missing joint" + std::string(missing.size() > 1 ? "s " : " ") +
-                listNames(missing) + "; every active joint appears exactly once");
+                listNames(missing) + "; every active joint appears exactly once (joints the task keeps still "
+                "go under `fixed: {joints_deg: {...}}` instead)");
   }
+  return out;
+}
+
+}  // namespace
+
+Configuration readJointValues(const YamlField& field, const RobotModel& robot) {
+  Configuration q(robot.dof());
+  for (const auto& [index, value] : readValues(field, robot, true)) q[index] = value;
   return q;
+}
+
+std::vector<std::pair<std::string, double>> readHeldJointValues(const YamlField& field, const RobotModel& robot) {
+  std::vector<std::pair<std::string, double>> held;
+  for (const auto& [index, value] : readValues(field, robot, false))
+    held.emplace_back(robot.activeJoints()[static_cast<std::size_t>(index)].name, value);
+  return held;
 }
 
 }  // namespace pmdplan

@@ -5,6 +5,7 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/model/resource_path.hpp"
 #include "placement_reading.hpp"
 #include "yaml_field.hpp"
 
@@ -12,8 +13,8 @@ namespace pmdplan {
 namespace {
 
 constexpr const char* kRobotForm =
-    "a built-in robot name (data/robots/<name>/) or a path to a .urdf file relative to the task "
-    "file";
+    "a built-in robot name (data/robots/<name>/) or a .urdf file: a path relative to the task "
+    "file, file:///path or package://NAME/path";
 
 /// `robot:` names a built-in robot unless it looks like a path (has a directory part or ends in
 /// .urdf); a URDF path uses the SRDF of the same stem beside it when there is one.
@@ -23,12 +24,13 @@ std::shared_ptr<const RobotModel> readRobot(const YamlField& field,
   if (written.empty()) field.fail(std::string("expected ") + kRobotForm + ", got an empty string");
   const std::filesystem::path asPath = written;
   if (asPath.has_parent_path() || asPath.extension() == ".urdf") {
-    std::filesystem::path urdf = asPath.is_relative() ? taskDirectory / asPath : asPath;
-    urdf = std::filesystem::absolute(urdf).lexically_normal();
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(urdf, error)) {
-      field.fail("URDF file not found: " + urdf.string() + " (relative to the task file)");
+    std::filesystem::path urdf;
+    try {
+      urdf = resolveResourcePath(written, taskDirectory / "task", "robot");
+    } catch (const InputError& e) {
+      field.fail("URDF file not found: " + e.message() + " (a relative path is relative to the task file)");
     }
+    std::error_code error;
     std::optional<std::filesystem::path> srdf;
     if (auto candidate = std::filesystem::path(urdf).replace_extension(".srdf");
         std::filesystem::is_regular_file(candidate, error)) {
@@ -61,7 +63,7 @@ Task loadTask(const std::filesystem::path& file) {
   const std::filesystem::path taskDirectory = std::filesystem::absolute(file).parent_path();
 
   root.requireMapWithKeys(
-      {"name", "description", "robot", "base", "target", "obstacles", "start", "goal", "pregrasp"},
+      {"name", "description", "robot", "base", "fixed", "target", "obstacles", "start", "goal", "pregrasp"},
       "a task map");
   Task task;
   task.file = file;
@@ -72,6 +74,10 @@ Task loadTask(const std::filesystem::path& file) {
     task.description = description->text("a one-line description");
   }
   task.robot = readRobot(root.child("robot", kRobotForm), taskDirectory);
+  if (const auto fixed = root.optionalChild("fixed")) {
+    const auto held = readHeldJointValues(*fixed, *task.robot);
+    task.robot = std::make_shared<const RobotModel>(task.robot->withHeldJoints(held, "fixed"));
+  }
 
   const std::string baseForm = "the robot base pose {xyz: [x, y, z] m, rpy_deg: [r, p, y]}";
   const YamlField base = root.child("base", baseForm);

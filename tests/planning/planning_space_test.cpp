@@ -64,9 +64,17 @@ TEST(PlanningSpace, CheckRejectsBadGroupsAndLimits) {
   space.joints[2].upper = space.joints[2].lower;
   EXPECT_THROW(space.check(), std::invalid_argument) << "empty range";
   space = toy::space();
+  space.armIndices = {0, 1, 2, 3, 4, 5};
+  space.handIndices.clear();
+  EXPECT_THROW(space.check(), std::invalid_argument) << "no hand";
+}
+
+TEST(PlanningSpace, AHandAloneHasNoArmJoints) {
+  PlanningSpace space = toy::space();
   space.armIndices.clear();
   space.handIndices = {0, 1, 2, 3, 4, 5};
-  EXPECT_THROW(space.check(), std::invalid_argument) << "no arm";
+  EXPECT_NO_THROW(space.check());
+  EXPECT_EQ(space.armDistance(space.denormalise(Eigen::VectorXd::Zero(6)), space.denormalise(Eigen::VectorXd::Ones(6))), 0.0);
 }
 
 }  // namespace

@@ -76,7 +76,11 @@ function start(data) {
     describe(data, notes);
     view.requestRender();
   });
-  const robot = createRobot(view.scene, data.robot, data.task.base, notes);
+  const robot = createRobot(view.scene, data.robot, data.task.base, notes, () => {
+    describe(data, notes);
+    view.requestRender();
+  });
+  api.robotMeshes = () => robot.meshStatus();
   const jointTable = createJointTable(byId('joint-table'), data.robot, robot);
   const ghosts = createGhostTrail(view.scene, robot);
   const states = data.path.states;

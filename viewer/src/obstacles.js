@@ -1,8 +1,7 @@
 // The task's obstacles from the viewer data: primitives built here, meshes loaded from the
 // folder (which needs the folder served over HTTP: browsers refuse file:// fetches).
 import * as THREE from 'three';
-import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
-import { ColladaLoader } from 'three/examples/jsm/loaders/ColladaLoader.js';
+import { loadMeshFile } from './robot_poser.js';
 
 const OBSTACLE_COLOUR = 0xc9c1b3;
 const TARGET_COLOUR = 0x4f9a45;
@@ -19,18 +18,14 @@ function primitiveGeometry(shape) {
 
 function loadMesh(shape, material, parent, notes, onChange) {
   const url = shape.file;
-  const done = (object) => {
+  loadMeshFile(url, undefined, material, (object) => {
     object.scale.set(shape.scale[0], shape.scale[1], shape.scale[2]);
     parent.add(object);
     onChange();
-  };
-  const failed = () => {
-    notes.push(`mesh ${url} not shown (serve the folder with pmdplan view --serve to load meshes)`);
+  }, (reason) => {
+    notes.push(`mesh ${url} not shown (${reason}; serve the folder with pmdplan view --serve to load meshes)`);
     onChange();
-  };
-  if (/\.stl$/i.test(url)) new STLLoader().load(url, (geometry) => done(new THREE.Mesh(geometry, material)), undefined, failed);
-  else if (/\.dae$/i.test(url)) new ColladaLoader().load(url, (collada) => done(collada.scene), undefined, failed);
-  else notes.push(`mesh ${url} not shown (the viewer draws STL and COLLADA meshes)`);
+  });
 }
 
 /// Adds the obstacles to `scene`; returns {group, byName}. Problems go into `notes`; `onChange` is

@@ -10,6 +10,9 @@ namespace pmdplan {
 /// Shortest decimal text that parses back to exactly `value` ("0.1", "1e-05", "42").
 std::string exactNumberText(double value);
 
+/// `value` to six significant digits, for messages ("89.99998" -> "90").
+std::string messageNumberText(double value);
+
 /// A finite decimal number (optional sign, digits, point, exponent), surrounding blanks allowed;
 /// nullopt for anything else, including inf and nan.
 std::optional<double> parseFiniteNumber(std::string_view text);

@@ -31,10 +31,19 @@ struct Joint {
   double mimicOffset = 0.0;
 };
 
+/// A mesh a link's <visual> names: the reference as the URDF writes it and the file it resolves to
+/// (empty when it does not resolve: visuals do not stop planning, the viewer then draws collision
+/// geometry).
+struct VisualMesh {
+  std::string reference;
+  std::filesystem::path file;
+};
+
 struct Link {
   std::string name;
   int parentJoint = -1;                     ///< -1 for the root link
   std::vector<PlacedShape> collisionShapes;  ///< poses in the link frame
+  std::vector<VisualMesh> visualMeshes;
 };
 
 class RobotModel {
@@ -81,6 +90,14 @@ public:
   const std::vector<std::pair<int, int>>& disabledCollisionPairs() const { return disabledPairs_; }
   bool isCollisionPairDisabled(int linkA, int linkB) const;
 
+  /// This robot with the given active joints held at the given values (rad or m): each becomes a
+  /// fixed joint at that value, and so do the joints that mimic it; the configuration layout and
+  /// the groups lose them. Throws InputError naming `field` for a joint that is not active.
+  RobotModel withHeldJoints(const std::vector<std::pair<std::string, double>>& held, const std::string& field) const;
+  /// The value a joint is held at by withHeldJoints, if it is held.
+  std::optional<double> heldJointValue(const std::string& jointName) const;
+  const std::vector<std::pair<std::string, double>>& heldJoints() const { return heldJoints_; }
+
   bool withinLimits(const Configuration& q, double tolerance = 1e-9) const;
   /// Joint values to [0, 1] by their limits and back (the paper's planning metric).
   Configuration normalise(const Configuration& q) const;
@@ -99,6 +116,7 @@ private:
   std::vector<GroupDefinition> groupDefinitions_;
   std::vector<std::pair<int, int>> disabledPairs_;
   std::vector<char> disabledMatrix_;
+  std::vector<std::pair<std::string, double>> heldJoints_;
 
   friend class RobotModelBuilder;
 };

@@ -15,6 +15,8 @@ struct PlanningSpace {
   /// Active joints, configuration order (arm first then hand, as the model defines it).
   JointLimits joints;
   /// Configuration indices of the arm joints and of the hand joints (together: every joint once).
+  /// A hand alone has no arm joints: the planner then samples hands only (Algorithm 4 without its
+  /// arm part).
   std::vector<int> armIndices;
   std::vector<int> handIndices;
 
@@ -24,7 +26,8 @@ struct PlanningSpace {
   int indexOf(const std::string& jointName) const;
 
   /// Throws std::invalid_argument if a range is not positive and finite, an index is out of range,
-  /// or the arm and hand indices do not split the joints into two disjoint, non-empty groups.
+  /// or the arm and hand indices do not split the joints into two disjoint groups, the hand's
+  /// non-empty.
   void check() const;
 
   /// Joint values to [0, 1] by their limits and back (the paper's planning metric).

@@ -5,8 +5,8 @@
 
 namespace pmdplan {
 
-/// Throws InputError naming the robot's file and "groups" if the model lacks an "arm" or "hand"
-/// group or the groups do not split the active joints.
+/// Throws InputError naming the robot's file and "groups" if the model lacks a "hand" group or the
+/// groups do not split the active joints. Without an "arm" group the robot is a hand alone.
 PlanningSpace planningSpaceFromRobot(const RobotModel& model);
 
 }  // namespace pmdplan

@@ -26,5 +26,7 @@ void validateSynergyModel(const SynergyModel& model, const std::string& sourceNa
 
 /// data/synergies/<robot>_default.yaml.
 std::filesystem::path defaultSynergyModelPath(const std::string& robotName);
+/// The same, which must exist: otherwise InputError naming --synergies with how to make a model.
+std::filesystem::path shippedSynergyModelPath(const std::string& robotName);
 
 }  // namespace pmdplan

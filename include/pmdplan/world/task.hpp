@@ -40,8 +40,8 @@ struct Task {
 /// Reads and validates a task file. Every problem is an InputError naming the file and the key:
 /// unknown keys, missing or duplicated joints, values outside the limits, NaN, unknown obstacle
 /// types, missing mesh files, an unloadable robot. The field reads like `obstacles[2].cylinder.radius
-/// (line 14)`. Optional keys: description, target, pregrasp (a configuration like start and goal;
-/// only with a target), rpy_deg (of base and obstacles, default 0 0 0)
+/// (line 14)`. Optional keys: description, fixed (joints held still, as start/goal but any subset), target,
+/// pregrasp (a configuration like start and goal; only with a target), rpy_deg (of base and obstacles, default 0 0 0)
 /// and mesh scale (default 1 1 1); `obstacles` may be []. `robot` is a built-in name unless it
 /// has a directory part or ends in .urdf (then relative to the task file, with the .srdf of the
 /// same stem beside it if present). Degrees are converted at load; a value that misses a joint
