@@ -192,12 +192,15 @@ FastCollisionChecker::Outcome FastCollisionChecker::linkPairContact(int a, int b
         gap = std::min(gap, bounds);
         continue;
       }
-      const PartContact contact = partContact(placedPart(a, i), placedPart(b, j), band_);
-      if (contact.contact == Contact::Overlapping) return Outcome::Overlapping;
-      if (contact.contact == Contact::Uncertain)
-        uncertain = true;
-      else
+      const ConvexPart &worldA = placedPart(a, i), &worldB = placedPart(b, j);
+      const PartContact contact = partContact(worldA, worldB, band_);
+      if (contact.contact == Contact::Apart) {
         gap = std::min(gap, contact.gap);
+        continue;
+      }
+      // A mesh's enclosure overlapping a part says nothing about the mesh itself.
+      if (contact.contact == Contact::Overlapping && !worldA.enclosure && !worldB.enclosure) return Outcome::Overlapping;
+      uncertain = true;
     }
   }
   return uncertain ? Outcome::Uncertain : Outcome::Apart;
@@ -215,13 +218,14 @@ FastCollisionChecker::Outcome FastCollisionChecker::linkObstacleContact(int link
       gap = std::min(gap, bound);
       continue;
     }
-    const PartContact contact = partContact(placedPart(link, i), obstacle.part, band_);
+    const ConvexPart& part = placedPart(link, i);
+    const PartContact contact = partContact(part, obstacle.part, band_);
     if (contact.contact == Contact::Apart) {
       gap = std::min(gap, contact.gap);
       continue;
     }
-    // A mesh's box overlapping a part says nothing about the mesh itself.
-    if (contact.contact == Contact::Overlapping && obstacle.exact) return Outcome::Overlapping;
+    // A mesh's enclosure overlapping a part says nothing about the mesh itself.
+    if (contact.contact == Contact::Overlapping && obstacle.exact && !part.enclosure) return Outcome::Overlapping;
     uncertain = true;
   }
   return uncertain ? Outcome::Uncertain : Outcome::Apart;

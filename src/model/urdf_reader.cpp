@@ -12,6 +12,8 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/model/mesh_file.hpp"
+#include "pmdplan/model/mesh_path.hpp"
 
 namespace pmdplan {
 namespace {
@@ -49,14 +51,7 @@ std::optional<Shape> toShape(const urdf::Geometry& geometry, const std::filesyst
       return SphereShape{static_cast<const urdf::Sphere&>(geometry).radius};
     case urdf::Geometry::MESH: {
       const auto& m = static_cast<const urdf::Mesh&>(geometry);
-      std::string file = m.filename;
-      if (file.rfind("file://", 0) == 0) file = file.substr(7);
-      if (file.rfind("package://", 0) == 0)
-        throw InputError(urdf.string(), field, "package:// mesh paths need a ROS workspace; use a path relative to the URDF");
-      std::filesystem::path path = file;
-      if (path.is_relative()) path = urdf.parent_path() / path;
-      if (!std::filesystem::exists(path)) throw InputError(urdf.string(), field, "mesh file not found: " + path.string());
-      return MeshShape{path, Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z)};
+      return loadMeshShape(resolveMeshPath(m.filename, urdf, field), Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z));
     }
   }
   return std::nullopt;

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "placement_reading.hpp"
+#include "pmdplan/model/mesh_file.hpp"
 
 namespace pmdplan {
 namespace {
@@ -42,12 +43,11 @@ Shape readMesh(const YamlField& field, const std::filesystem::path& taskDirector
     fileField.fail("mesh file not found: " + resolved.string() +
                    " (relative paths are relative to the task file)");
   }
-  MeshShape mesh;
-  mesh.file = resolved;
-  if (const auto scale = field.optionalChild("scale")) {
-    mesh.scale = scale->positiveVector3("scale factors [x, y, z], each greater than 0");
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  if (const auto scaleField = field.optionalChild("scale")) {
+    scale = scaleField->positiveVector3("scale factors [x, y, z], each greater than 0");
   }
-  return mesh;
+  return loadMeshShape(resolved, scale);
 }
 
 Obstacle readObstacle(const YamlField& field, const std::filesystem::path& taskDirectory) {
