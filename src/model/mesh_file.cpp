@@ -17,7 +17,8 @@ TriangleMesh readMeshFile(const std::filesystem::path& file, const Eigen::Vector
   const std::string name = file.string();
   if (!scale.allFinite()) throw InputError(name, "scale", "expected finite scale factors");
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  // Not aiProcess_JoinIdenticalVertices: it merges a NaN vertex into another one, hiding it.
+  const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate);
   if (!scene || !scene->mRootNode) throw InputError(name, "mesh", std::string("cannot read the mesh: ") + importer.GetErrorString());
   TriangleMesh mesh;
   // Walk the node tree so that sub-meshes get their node transforms.
