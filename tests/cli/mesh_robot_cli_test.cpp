@@ -6,7 +6,6 @@
 #include <nlohmann/json.hpp>
 
 #include "collision/primitive_meshes.hpp"
-#include "pmdplan/core/atomic_file.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -22,10 +21,7 @@ const std::filesystem::path kRobots = std::filesystem::path(PMDPLAN_TEST_DATA_DI
 std::filesystem::path meshTask(const test::TempDir& dir) {
   const auto urdf = testing::writeMeshRobot(dir, kRobots / "sah_tx90.urdf", kRobots / "sah_tx90.srdf", "mesh_robot",
                                             testing::Tessellation::Circumscribed);
-  std::string text = readTextFile(std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "scenes" / "can_on_table.yaml");
-  const std::string line = "robot: sah_tx90\n";
-  text.replace(text.find(line), line.size(), "robot: " + urdf.filename().string() + "\n");
-  return dir.write("mesh_task.yaml", text);
+  return dir.write("mesh_task.yaml", testing::builtInTaskText("can_on_table", urdf.filename().string()));
 }
 
 TEST(MeshRobotCli, PlansAndValidatesWithBothCheckers) {

@@ -20,12 +20,8 @@ namespace {
 
 const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
 
-/// The built-in task `name` with the robot replaced by the URDF `urdf`.
 Task taskWithRobot(const test::TempDir& dir, const std::string& name, const std::filesystem::path& urdf) {
-  std::string text = readTextFile(dataDirectory() / "scenes" / (name + ".yaml"));
-  const std::string line = "robot: sah_tx90\n";
-  text.replace(text.find(line), line.size(), "robot: " + urdf.string() + "\n");
-  return loadTask(dir.write(name + ".yaml", text));
+  return loadTask(dir.write(name + ".yaml", testing::builtInTaskText(name, urdf.string())));
 }
 
 std::filesystem::path robotFile(const std::string& extension) {

@@ -2,7 +2,8 @@
 // Test robots whose collision geometry is all meshes: every box, cylinder and sphere of a URDF
 // replaced by a triangulated unit shape in an ASCII STL file, sized by the mesh's scale
 // attribute. Inscribed tessellations (vertices on the primitive's surface) lie inside the
-// primitive; circumscribed ones (faces tangent to it or outside) contain it.
+// primitive; circumscribed ones (faces tangent to it or outside) contain it. Used by the tests and
+// by bench/collision_check_bench.cpp.
 #include <Eigen/Geometry>
 #include <tinyxml2.h>
 
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/data_directory.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan::testing {
@@ -141,6 +143,14 @@ inline std::filesystem::path writeMeshRobot(const test::TempDir& dir, const std:
   document.Print(&printer);
   dir.write(name + ".srdf", readTextFile(srdf));
   return dir.write(name + ".urdf", printer.CStr());
+}
+
+/// The text of the built-in task `name` with `robot:` set to `robot`.
+inline std::string builtInTaskText(const std::string& name, const std::string& robot) {
+  std::string text = readTextFile(dataDirectory() / "scenes" / (name + ".yaml"));
+  const std::string line = "robot: sah_tx90\n";
+  text.replace(text.find(line), line.size(), "robot: " + robot + "\n");
+  return text;
 }
 
 }  // namespace pmdplan::testing
