@@ -108,7 +108,9 @@ public:
   double band() const { return band_; }
 
 private:
-  enum class Outcome { Apart, Overlapping, Uncertain };
+  /// EnclosuresOverlap: like Uncertain (FCL decides), with a mesh's enclosure overlapping the
+  /// other side by more than the band, so FCL is asked about it first.
+  enum class Outcome { Apart, Overlapping, Uncertain, EnclosuresOverlap };
   /// A pair not proven apart: self (two links) or a link and an obstacle.
   struct Flag {
     bool self;
