@@ -45,14 +45,15 @@ void tryFrame(const std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d&
       const Eigen::Vector3d local = frame.transpose() * p - middle;
       radius2 = std::max(radius2, local(i) * local(i) + local(j) * local(j));
     }
-    const double radius = std::sqrt(radius2) + kMargin;
+    // The core is fitted to the tight radius, so that the margin is left all round.
+    const double tight = std::sqrt(radius2), radius = tight + kMargin;
     Candidate cylinder{Form::Cylinder, 2.0 * kPi * radius * radius * half(k), axes, frame * middle, {radius, half(k), 0.0}};
     if (cylinder.volume < best.volume) best = cylinder;
     // The capsule core [from, to] along the axis: every point within `radius` of it.
     double from = std::numeric_limits<double>::infinity(), to = -from;
     for (const auto& p : points) {
       const Eigen::Vector3d local = frame.transpose() * p - middle;
-      const double reach = std::sqrt(std::max(0.0, radius * radius - local(i) * local(i) - local(j) * local(j)));
+      const double reach = std::sqrt(std::max(0.0, tight * tight - local(i) * local(i) - local(j) * local(j)));
       from = std::min(from, local(k) + reach), to = std::max(to, local(k) - reach);
     }
     if (from > to) from = to = 0.5 * (from + to);

@@ -11,7 +11,12 @@
 
 #include "collision/primitive_meshes.hpp"
 #include "collision/task_configurations.hpp"
+#include "pmdplan/collision/convex_distance.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast_segment_checker.hpp"
+#include "pmdplan/collision/link_part_model.hpp"
+#include "pmdplan/collision/segment_checker.hpp"
+#include "pmdplan/model/mesh_file.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/data_directory.hpp"
 
@@ -49,6 +54,73 @@ TEST(MeshRobot, EveryCollisionShapeIsAMeshAndTheMotionBoundCoversIt) {
     EXPECT_GE(meshBound.bound(zero, step), primitiveBound.bound(zero, step) * (1.0 - 1e-12)) << "joint " << i;
     EXPECT_LE(meshBound.bound(zero, step), primitiveBound.bound(zero, step) * 1.05) << "joint " << i;
   }
+}
+
+// Each mesh is one enclosure part holding all its vertices: a box mesh a box of the box's size, a
+// sphere mesh a ball (a capsule with one point for core), a cylinder mesh a cylinder.
+TEST(MeshRobot, EveryMeshIsOneEnclosureHoldingAllItsVertices) {
+  test::TempDir dir;
+  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Inscribed);
+  const RobotModel model = RobotModel::load(urdf, urdf.parent_path() / "mesh_robot.srdf");
+  const auto parts = linkParts(model);
+  int boxes = 0, balls = 0, cylinders = 0;
+  for (std::size_t l = 0; l < parts.size(); ++l) {
+    const auto& shapes = model.links()[l].collisionShapes;
+    ASSERT_EQ(parts[l].parts.size(), shapes.size()) << model.links()[l].name;
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+      const ConvexPart& part = parts[l].parts[k];
+      EXPECT_TRUE(part.enclosure);
+      const auto& mesh = std::get<MeshShape>(shapes[k].shape);
+      for (const auto& vertex : mesh.triangles->vertices) {
+        const Eigen::Vector3d p = shapes[k].pose * vertex;
+        ASSERT_LE(sphereGap(part, p.data(), 0.0), 0.0) << model.links()[l].name << " shape " << k;
+      }
+      const std::string file = mesh.file.filename().string();
+      if (file == "box.stl") {
+        ++boxes;
+        EXPECT_EQ(part.kind, ConvexPart::Kind::Box);
+        EXPECT_NEAR(2.0 * part.half[0] * 2.0 * part.half[1] * 2.0 * part.half[2], mesh.scale.prod(), 1e-6 * mesh.scale.prod() + 1e-12);
+      } else if (file == "sphere.stl") {
+        ++balls;
+        EXPECT_EQ(part.kind, ConvexPart::Kind::Capsule);
+        EXPECT_NEAR(part.radius, mesh.scale.x(), 1e-6);
+        EXPECT_NEAR(segmentDistance(part.a, part.a, part.b, part.b), 0.0, 1e-6);
+      } else {
+        ++cylinders;
+        EXPECT_EQ(part.kind, ConvexPart::Kind::Cylinder);
+      }
+    }
+  }
+  EXPECT_GT(boxes, 0);
+  EXPECT_GT(balls, 0);
+  EXPECT_GT(cylinders, 0);
+}
+
+// Motion checks follow each pair along the segment (FastSegmentChecker::testPair): with meshes too
+// their answers are the exact SegmentChecker's.
+TEST(MeshRobot, FastMotionChecksEqualTheExactOnes) {
+  test::TempDir dir;
+  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Circumscribed);
+  const Task task = taskWithRobot(dir, "can_on_table", urdf);
+  ExactCollisionChecker exact(task), reference(task);
+  FastCollisionChecker fast(task, exact);
+  SegmentChecker slow(reference, *task.robot, 0.001);
+  FastSegmentChecker sweeping(fast, *task.robot, 0.001);
+  RandomSource random(31);
+  int made = 0, blocked = 0;
+  while (made < 400) {
+    const Configuration from = testing::taskConfiguration(task, random, 1 + made % 2, 0.08);
+    if (!reference.isValid(from)) continue;
+    Configuration direction(task.robot->dof());
+    for (int i = 0; i < direction.size(); ++i) direction[i] = testing::normal(random);
+    const Configuration to = from + direction * (random.uniform(0.01, 0.6) / slow.bound().bound(from, from + direction));
+    if (!task.robot->withinLimits(to, 0.0)) continue;
+    const bool free = slow.isValid(from, to);
+    ASSERT_EQ(sweeping.isValid(from, to), free) << "segment " << made;
+    blocked += !free;
+    ++made;
+  }
+  EXPECT_GT(blocked, 20);
 }
 
 TEST(MeshRobot, FastEqualsExactOn100000ConfigurationsOfTheFiveTasks) {
