@@ -33,6 +33,17 @@ std::filesystem::path robotFile(const std::string& extension) {
   return dataDirectory() / "robots" / "sah_tx90" / ("sah_tx90" + extension);
 }
 
+/// The built-in task `name` on the mesh robot, with both checkers (and an exact one for reference).
+struct MeshTask {
+  MeshTask(const std::string& name, testing::Tessellation kind)
+      : task(taskWithRobot(dir, name, testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", kind))),
+        exact(task), reference(task), fast(task, exact) {}
+  test::TempDir dir;
+  Task task;
+  ExactCollisionChecker exact, reference;
+  FastCollisionChecker fast;
+};
+
 TEST(MeshRobot, EveryCollisionShapeIsAMeshAndTheMotionBoundCoversIt) {
   test::TempDir dir;
   const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Circumscribed);
@@ -99,13 +110,11 @@ TEST(MeshRobot, EveryMeshIsOneEnclosureHoldingAllItsVertices) {
 // Motion checks follow each pair along the segment (FastSegmentChecker::testPair): with meshes too
 // their answers are the exact SegmentChecker's.
 TEST(MeshRobot, FastMotionChecksEqualTheExactOnes) {
-  test::TempDir dir;
-  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Circumscribed);
-  const Task task = taskWithRobot(dir, "can_on_table", urdf);
-  ExactCollisionChecker exact(task), reference(task);
-  FastCollisionChecker fast(task, exact);
+  MeshTask mesh("can_on_table", testing::Tessellation::Circumscribed);
+  const Task& task = mesh.task;
+  ExactCollisionChecker& reference = mesh.reference;
   SegmentChecker slow(reference, *task.robot, 0.001);
-  FastSegmentChecker sweeping(fast, *task.robot, 0.001);
+  FastSegmentChecker sweeping(mesh.fast, *task.robot, 0.001);
   RandomSource random(31);
   int made = 0, blocked = 0;
   while (made < 400) {
@@ -155,11 +164,10 @@ TEST(MeshRobot, FastEqualsExactOn100000ConfigurationsOfTheFiveTasks) {
 }
 
 TEST(MeshRobot, BatchesGiveTheExactCheckersAnswers) {
-  test::TempDir dir;
-  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Inscribed);
-  const Task task = taskWithRobot(dir, "cans_in_shelf", urdf);
-  ExactCollisionChecker exact(task), reference(task);
-  FastCollisionChecker fast(task, exact);
+  MeshTask mesh("cans_in_shelf", testing::Tessellation::Inscribed);
+  const Task& task = mesh.task;
+  ExactCollisionChecker& reference = mesh.reference;
+  FastCollisionChecker& fast = mesh.fast;
   RandomSource random(7);
   for (int batch = 0; batch < 1000; ++batch) {
     std::vector<Configuration> qs;
