@@ -3,7 +3,9 @@
 #include <map>
 
 #include "placement_reading.hpp"
+#include "pmdplan/core/input_error.hpp"
 #include "pmdplan/model/mesh_file.hpp"
+#include "pmdplan/model/mesh_path.hpp"
 
 namespace pmdplan {
 namespace {
@@ -34,14 +36,11 @@ Shape readMesh(const YamlField& field, const std::filesystem::path& taskDirector
   field.requireMapWithKeys({"file", "scale"}, form);
   const YamlField fileField = field.child("file", "a mesh file path");
   const std::string written = fileField.text("a mesh file path (relative to the task file)");
-  if (written.empty()) fileField.fail("expected a mesh file path, got an empty string");
-  std::filesystem::path resolved = written;
-  if (resolved.is_relative()) resolved = taskDirectory / resolved;
-  resolved = std::filesystem::absolute(resolved).lexically_normal();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(resolved, error)) {
-    fileField.fail("mesh file not found: " + resolved.string() +
-                   " (relative paths are relative to the task file)");
+  std::filesystem::path resolved;
+  try {
+    resolved = resolveMeshPath(written, taskDirectory / std::filesystem::path(fileField.file()).filename(), fileField.path());
+  } catch (const InputError& e) {
+    fileField.fail(e.message());  // with the line
   }
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
   if (const auto scaleField = field.optionalChild("scale")) {
