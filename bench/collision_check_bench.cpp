@@ -8,6 +8,9 @@
 // Then motion checks: SegmentChecker on the exact checker against FastSegmentChecker, on the
 // segments that plan checked ("plan") and on short random ones ("short", 2 to 60 states). After
 // the Google Benchmark table, a summary prints the exact/fast ratio of every pair of benchmarks.
+// Tasks named "mesh:TASK" run the same on the mesh robot: the SAH + TX90 with every collision
+// primitive a triangulated STL (circumscribed; tests/collision/primitive_meshes.hpp), written to a
+// temporary folder at start.
 //
 //   collision_check_bench [--benchmark_min_time=0.2] [--benchmark_filter=...]
 //       [--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true]  (on a shared machine)
@@ -21,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "collision/primitive_meshes.hpp"
 #include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
@@ -109,7 +113,17 @@ TaskData& taskData(const std::string& name) {
   if (slot) return *slot;
   slot = std::make_unique<TaskData>();
   auto& d = *slot;
-  d.task = loadTaskByName(name);
+  const std::string meshPrefix = "mesh:";
+  if (name.rfind(meshPrefix, 0) == 0) {
+    static const test::TempDir folder;
+    static const auto robots = dataDirectory() / "robots" / "sah_tx90";
+    static const auto urdf = testing::writeMeshRobot(folder, robots / "sah_tx90.urdf", robots / "sah_tx90.srdf", "mesh_robot",
+                                                     testing::Tessellation::Circumscribed);
+    const std::string task = name.substr(meshPrefix.size());
+    d.task = loadTask(folder.write(task + ".yaml", testing::builtInTaskText(task, urdf.string())));
+  } else {
+    d.task = loadTaskByName(name);
+  }
   d.exact = std::make_unique<ExactCollisionChecker>(d.task);
   d.confirm = std::make_unique<ExactCollisionChecker>(d.task);
   d.fast = std::make_unique<FastCollisionChecker>(d.task, *d.confirm);
@@ -210,14 +224,18 @@ public:
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  for (const auto& name : kTasks) {
-    // "fast" at the CPU's widest lane vectors, "fast-N" at the narrower widths N it runs too.
+  std::vector<std::string> names = kTasks;
+  for (const auto& task : kTasks) names.push_back("mesh:" + task);
+  for (const auto& name : names) {
+    // "fast" at the CPU's widest lane vectors, "fast-N" at the narrower widths N it runs too
+    // (not for the mesh robot).
     const int widest = FastCollisionChecker::widestLaneWidth();
+    const int narrowest = name.rfind("mesh:", 0) == 0 ? widest : 2;
     for (const auto& [which, label] : {std::pair{0, "plan"}, std::pair{1, "random"}}) {
       benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/exact").c_str(),
                                    [=](benchmark::State& s) { checkStates(s, name, false, which, widest); })
           ->Unit(benchmark::kMicrosecond);
-      for (int width = widest; width >= 2; width /= 2)
+      for (int width = widest; width >= narrowest; width /= 2)
         benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/fast" + (width == widest ? "" : "-" + std::to_string(width))).c_str(),
                                      [=](benchmark::State& s) { checkStates(s, name, true, which, width); })
             ->Unit(benchmark::kMicrosecond);

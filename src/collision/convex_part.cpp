@@ -70,6 +70,7 @@ ConvexPart cylinderPart(const double* pose, double radius, double halfLength) {
 
 void placePart(const ConvexPart& local, const double* pose, ConvexPart& world) {
   world.kind = local.kind;
+  world.enclosure = local.enclosure;
   world.radius = local.radius;
   for (int i = 0; i < 3; ++i) world.half[i] = local.half[i];
   transformPoint(pose, local.a, world.a);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "fcl_geometry.hpp"
+#include "mesh_containment.hpp"
 #include "urdf_capsules.hpp"
 
 namespace pmdplan {
@@ -15,6 +16,9 @@ struct PlacedGeometry {
   Eigen::Isometry3d pose;  ///< in the link frame (robot) or the world (obstacles)
   double radius = 0.0;     ///< encloses the geometry around pose.translation()
   bool againstBoxesOnly = false;  ///< a URDF capsule's second form (see the constructor)
+  /// A point of the geometry (in its frame): a primitive's centre, a mesh's first vertex.
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  std::shared_ptr<const MeshInterior> interior;  ///< meshes: what is inside them
 };
 
 /// An obstacle with its world-aligned bounding box: large flat obstacles (floor, table) have huge
@@ -56,7 +60,22 @@ bool shapesCollide(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, cons
   if (spheresApart(poseA.translation(), a.radius, poseB.translation(), b.radius)) return false;
   fcl::CollisionResultd result;
   fcl::collide(a.geometry.get(), poseA, b.geometry.get(), poseB, request, result);
-  return result.isCollision();
+  if (result.isCollision()) return true;
+  // No triangle touched: one wholly inside the other mesh (mesh_containment.hpp)?
+  return (b.interior && b.interior->contains(poseB.inverse() * (poseA * a.point))) ||
+         (a.interior && a.interior->contains(poseA.inverse() * (poseB * b.point)));
+}
+
+/// Geometry for `shape` placed at `pose`, with its point and, for a mesh, its interior.
+PlacedGeometry placedGeometry(const Shape& shape, const Eigen::Isometry3d& pose) {
+  PlacedGeometry placed{makeFclGeometry(shape), pose};
+  placed.radius = enclosingRadius(shape, *placed.geometry);
+  if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
+    auto triangles = mesh->triangles ? mesh->triangles : std::make_shared<const TriangleMesh>(readMeshFile(mesh->file, mesh->scale));
+    placed.point = triangles->vertices[triangles->triangles.front()[0]];
+    placed.interior = std::make_shared<const MeshInterior>(std::move(triangles));
+  }
+  return placed;
 }
 
 /// Distance between two shapes, or minus their penetration depth when they overlap. Whether they
@@ -92,10 +111,7 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
   g.linkSpheres.resize(links.size());
   for (std::size_t l = 0; l < links.size(); ++l) {
     const auto& shapes = links[l].collisionShapes;
-    for (const auto& placed : shapes) {
-      auto geometry = makeFclGeometry(placed.shape);
-      g.links[l].push_back({geometry, placed.pose, enclosingRadius(placed.shape, *geometry)});
-    }
+    for (const auto& placed : shapes) g.links[l].push_back(placedGeometry(placed.shape, placed.pose));
     // Against boxes, a URDF capsule (a cylinder capped by two spheres of its radius) goes to FCL
     // as one capsule too. The union is the same solid, but FCL 0.7 (GJK, GST_INDEP) misses some
     // contacts of a box with a cylinder, and others of a box with a capsule: asked both ways it
@@ -128,9 +144,7 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
         g.selfPairs.emplace_back(static_cast<int>(a), static_cast<int>(b));
   for (const auto& obstacle : task.obstacles) {
     PlacedObstacle placed;
-    placed.geometry = makeFclGeometry(obstacle.shape);
-    placed.pose = obstacle.pose;
-    placed.radius = enclosingRadius(obstacle.shape, *placed.geometry);
+    static_cast<PlacedGeometry&>(placed) = placedGeometry(obstacle.shape, obstacle.pose);
     const fcl::AABBd& box = placed.geometry->aabb_local;
     // World box of the rotated local box: its eight corners.
     placed.boxMin = Eigen::Vector3d::Constant(1e300);

@@ -407,7 +407,7 @@ void FastCollisionChecker::screenBatch(const Configuration* const* configuration
         overlapping = true;
         break;
       }
-      if (outcome == Outcome::Uncertain) {
+      if (outcome != Outcome::Apart) {
         uncertain_.push_back(Flag{self, a, b, outcome});
         gap = 0.0;
       }

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
-#include "fcl_geometry.hpp"
+#include "mesh_enclosure.hpp"
 #include "urdf_capsules.hpp"
 #include "pmdplan/collision/convex_distance.hpp"
 
@@ -58,8 +57,8 @@ LinkParts partsOf(const RobotModel& model, std::size_t link) {
       plainPose(placed.pose, pose);
       const double half[3] = {0.5 * box->size.x(), 0.5 * box->size.y(), 0.5 * box->size.z()};
       result.parts.push_back(boxPart(pose, half));
-    } else if (std::holds_alternative<MeshShape>(placed.shape)) {
-      throw std::invalid_argument("link '" + model.links()[link].name + "' has a mesh: the fast checker needs boxes, cylinders and spheres");
+    } else if (const auto* mesh = std::get_if<MeshShape>(&placed.shape)) {
+      result.parts.push_back(meshEnclosure(*mesh, placed.pose));
     }
   }
   if (result.parts.empty()) return result;
@@ -102,13 +101,8 @@ std::vector<ObstaclePart> obstacleParts(const std::vector<Obstacle>& obstacles) 
     } else if (const auto* sphere = std::get_if<SphereShape>(&obstacle.shape)) {
       parts.push_back({capsulePart(pose + 9, pose + 9, sphere->radius), true});
     } else {
-      // A mesh: the bounding box of its triangles in the mesh frame (what FCL reads), solid.
-      const auto geometry = makeFclGeometry(obstacle.shape);
-      const auto& box = geometry->aabb_local;
-      plainPoint(obstacle.pose * (0.5 * (box.min_ + box.max_)), pose + 9);
-      const Eigen::Vector3d half = 0.5 * (box.max_ - box.min_);
-      const double halfExtents[3] = {half.x(), half.y(), half.z()};
-      parts.push_back({boxPart(pose, halfExtents), false});
+      // A mesh: its enclosure, which only ever proves "apart".
+      parts.push_back({meshEnclosure(std::get<MeshShape>(obstacle.shape), obstacle.pose), false});
     }
   }
   return parts;

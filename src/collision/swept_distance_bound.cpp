@@ -32,7 +32,7 @@ SweptDistanceBound::SweptDistanceBound(const RobotModel& model) : leverArms_(sta
     for (const auto& placed : model.links()[l].collisionShapes) {
       const double r = boundingRadius(placed.shape);
       if (!std::isfinite(r))
-        throw std::invalid_argument("link '" + model.links()[l].name + "' has a mesh: its extent is needed for the motion bound");
+        throw std::invalid_argument("link '" + model.links()[l].name + "': a mesh whose triangles were not read (loadMeshShape)");
       shapeReach[l] = std::max(shapeReach[l], placed.pose.translation().norm() + r);
     }
   const auto& joints = model.joints();

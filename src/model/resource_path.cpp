@@ -83,6 +83,9 @@ std::filesystem::path resolveResourcePath(const std::string& reference, const st
                                           const std::string& field) {
   if (reference.empty()) throw InputError(referencingFile.string(), field, "expected a file path, got an empty string");
   if (startsWith(reference, kPackagePrefix)) return resolvePackage(reference, referencingFile, field);
+  if (!startsWith(reference, kFilePrefix) && reference.find("://") != std::string::npos)
+    throw InputError(referencingFile.string(), field,
+                     "'" + reference + "' is not a URI this reads: expected package://NAME/path, file:///path or a file path");
   std::filesystem::path path = startsWith(reference, kFilePrefix) ? reference.substr(std::string(kFilePrefix).size()) : reference;
   if (path.is_relative()) path = std::filesystem::absolute(referencingFile).parent_path() / path;
   path = path.lexically_normal();

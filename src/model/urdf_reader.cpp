@@ -12,6 +12,7 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/model/mesh_file.hpp"
 #include "pmdplan/model/resource_path.hpp"
 #include "srdf_name_matching.hpp"
 
@@ -51,8 +52,7 @@ std::optional<Shape> toShape(const urdf::Geometry& geometry, const std::filesyst
       return SphereShape{static_cast<const urdf::Sphere&>(geometry).radius};
     case urdf::Geometry::MESH: {
       const auto& m = static_cast<const urdf::Mesh&>(geometry);
-      const std::filesystem::path path = resolveResourcePath(m.filename, urdf, field + ".mesh.filename");
-      return MeshShape{path, Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z)};
+      return loadMeshShape(resolveResourcePath(m.filename, urdf, field + ".mesh.filename"), Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z));
     }
   }
   return std::nullopt;

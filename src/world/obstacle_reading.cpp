@@ -4,6 +4,7 @@
 
 #include "placement_reading.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/model/mesh_file.hpp"
 #include "pmdplan/model/resource_path.hpp"
 
 namespace pmdplan {
@@ -38,16 +39,15 @@ Shape readMesh(const YamlField& field, const std::filesystem::path& taskDirector
   if (written.empty()) fileField.fail("expected a mesh file path, got an empty string");
   std::filesystem::path resolved;
   try {
-    resolved = resolveResourcePath(written, taskDirectory / "task", "file");
+    resolved = resolveResourcePath(written, taskDirectory / std::filesystem::path(fileField.file()).filename(), fileField.path());
   } catch (const InputError& e) {
-    fileField.fail("mesh file not found: " + e.message() + " (relative paths are relative to the task file)");
+    fileField.fail(e.message() + " (relative paths are relative to the task file)");
   }
-  MeshShape mesh;
-  mesh.file = resolved;
-  if (const auto scale = field.optionalChild("scale")) {
-    mesh.scale = scale->positiveVector3("scale factors [x, y, z], each greater than 0");
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  if (const auto scaleField = field.optionalChild("scale")) {
+    scale = scaleField->positiveVector3("scale factors [x, y, z], each greater than 0");
   }
-  return mesh;
+  return loadMeshShape(resolved, scale);
 }
 
 Obstacle readObstacle(const YamlField& field, const std::filesystem::path& taskDirectory) {

@@ -96,7 +96,7 @@ TEST(FastCollisionChecker, EqualsTheExactCheckerOnRandomConfigurationsOfEveryTas
   EXPECT_LT(uncertain, total / 100);
 }
 
-// A mesh obstacle stands in the broad phase as its bounding box, which proves "apart" only: near
+// A mesh obstacle stands in the broad phase as its enclosure, which proves "apart" only: near
 // it, FCL on the triangles decides. Here a tetrahedron 8 cm across beside the goal can.
 TEST(FastCollisionChecker, NearAMeshItGivesFclsAnswerToo) {
   test::TempDir dir;
@@ -122,7 +122,7 @@ TEST(FastCollisionChecker, NearAMeshItGivesFclsAnswerToo) {
     const CollisionReport report = reference.check(q);
     ASSERT_EQ(fast.isValid(q), report.free()) << "sample " << s;
     const ScreenResult screen = fast.screen(q);
-    for (const auto& [link, obstacle] : screen.overlappingObstacle) ASSERT_NE(obstacle, tetra) << "a mesh's box proves nothing";
+    for (const auto& [link, obstacle] : screen.overlappingObstacle) ASSERT_NE(obstacle, tetra) << "a mesh's enclosure proves nothing";
     for (const auto& [link, obstacle] : screen.uncertainObstacle) nearMesh += obstacle == tetra;
     colliding += !report.free();
   }

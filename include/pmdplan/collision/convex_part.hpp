@@ -28,6 +28,9 @@ struct ConvexPart {
   double outerA[3] = {0, 0, 0};
   double outerB[3] = {0, 0, 0};
   double outerRadius = 0.0;
+  /// True for a part that only encloses a mesh (mesh_enclosure.hpp): apart from it is apart from
+  /// the mesh, an overlap with it proves nothing.
+  bool enclosure = false;
 };
 
 ConvexPart capsulePart(const double* a, const double* b, double radius);

@@ -2,7 +2,9 @@
 // The exact reference checker on FCL: self-collision over the enabled link pairs and collision of
 // every link with the task's static obstacles. Primitives use FCL's analytic routines or its
 // independent GJK (GST_INDEP; the libccd default gives wrong box-capsule and box-box answers in
-// FCL 0.7); meshes are triangle surfaces.
+// FCL 0.7); meshes are their triangles to FCL, and where FCL finds no triangle touching, geometry
+// wholly inside a closed mesh collides with it too (a winding-number test), so that meshes are
+// solids like the primitives.
 #include <memory>
 #include <optional>
 #include <string>

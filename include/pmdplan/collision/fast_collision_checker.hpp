@@ -2,12 +2,13 @@
 // The fast checker: the exact checker's answers at a fraction of its cost.
 // Forward kinematics runs for several configurations at once (BatchedForwardKinematics), and so do
 // checkBatch's geometric stages (fast_batch_screen.cpp, on lane vectors). Every link is a few
-// convex parts equal to its URDF primitives (link_part_model.hpp) inside a bounding sphere. For
+// convex parts equal to its URDF primitives, or enclosing its meshes (link_part_model.hpp), inside
+// a bounding sphere. For
 // one configuration, a broad phase tests the bounding spheres of the same enabled self pairs as the exact
 // checker and of every link against the obstacles, in branch-free passes; the pairs whose spheres
 // meet go to the narrow phase, part against part (partContact: closed form for two capsules, GJK
 // otherwise), which proves them apart (with a lower bound on the gap) or overlapping by more than
-// `band`. Only a pair within `band` of touching, or near a mesh obstacle, is handed to FCL
+// `band`. Only a pair within `band` of touching, or a mesh not proven apart, is handed to FCL
 // (ExactCollisionChecker::linkPairCollides / linkObstacleCollides) — so every answer equals the
 // exact checker's while FCL runs on almost no checks. Pairs that no joint moves (links fixed to
 // the base, static obstacles) are decided once, by FCL.
@@ -108,7 +109,9 @@ public:
   double band() const { return band_; }
 
 private:
-  enum class Outcome { Apart, Overlapping, Uncertain };
+  /// EnclosuresOverlap: like Uncertain (FCL decides), with a mesh's enclosure overlapping the
+  /// other side by more than the band, so FCL is asked about it first.
+  enum class Outcome { Apart, Overlapping, Uncertain, EnclosuresOverlap };
   /// A pair not proven apart: self (two links) or a link and an obstacle.
   struct Flag {
     bool self;

@@ -2,6 +2,7 @@
 // Geometric primitives shared by robot links and environment obstacles (SI units).
 #include <Eigen/Geometry>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <variant>
 
@@ -17,9 +18,13 @@ struct CylinderShape {
 struct SphereShape {
   double radius = 0.0;
 };
+struct TriangleMesh;  // mesh_file.hpp
+
 struct MeshShape {
   std::filesystem::path file;                     ///< absolute, or as resolved by the loader
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  /// Its triangles, scaled (loadMeshShape); null until read.
+  std::shared_ptr<const TriangleMesh> triangles;
 };
 
 using Shape = std::variant<BoxShape, CylinderShape, SphereShape, MeshShape>;
@@ -31,7 +36,7 @@ struct PlacedShape {
 };
 
 /// Radius of the smallest origin-centred sphere that encloses the shape in its own frame
-/// (meshes: computed by the collision layer, here +inf).
+/// (meshes: their farthest vertex; +inf for a mesh whose triangles were not read).
 double boundingRadius(const Shape& shape);
 
 }  // namespace pmdplan
