@@ -69,13 +69,20 @@ std::vector<std::string> split(const std::string& line) {
 }  // namespace
 
 std::string encodeRunRecord(const RunRecord& r) {
-  const std::vector<std::string> fields = {
+  std::vector<std::string> fields = {
       "run-record-1", escapedText(r.task), escapedText(r.planner), number(r.run), number(r.seed), r.solved ? "1" : "0",
       r.valid ? "1" : "0", number(r.planningTimeSeconds), number(r.smoothingTimeSeconds), number(r.samples),
       number(r.roadmapNodes), number(r.pathNodes), number(r.pathLength), number(r.collisionChecks),
       r.humanLikeness ? "1" : "0", number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0),
       number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0),
       number(r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0), escapedText(r.failure)};
+  // The measures independent of the planner's model (last, so older fields keep their places).
+  const IndependentHumanLikeness* independent =
+      r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
+  fields.push_back(independent ? "1" : "0");
+  fields.push_back(number(independent ? independent->authorsSubspaceDistanceMean : 0.0));
+  fields.push_back(number(independent ? independent->authorsSubspaceDistanceMax : 0.0));
+  fields.push_back(number(independent ? independent->jointCoupling : 0.0));
   std::string line;
   for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? std::string(1, kSeparator) : "") + fields[i];
   return line;
@@ -83,7 +90,7 @@ std::string encodeRunRecord(const RunRecord& r) {
 
 std::optional<RunRecord> decodeRunRecord(const std::string& text) {
   const auto f = split(text);
-  if (f.size() != 19 || f[0] != "run-record-1") return std::nullopt;
+  if (f.size() != 23 || f[0] != "run-record-1") return std::nullopt;
   RunRecord r;
   const auto task = unescapedText(f[1]), planner = unescapedText(f[2]), failure = unescapedText(f[18]);
   if (!task || !planner || !failure) return std::nullopt;
@@ -102,7 +109,12 @@ std::optional<RunRecord> decodeRunRecord(const std::string& text) {
                   parse(f[10], r.roadmapNodes) && parse(f[11], r.pathNodes) && parse(f[12], r.pathLength) &&
                   parse(f[13], r.collisionChecks) && flag(f[14], hasHumanLikeness) && parse(f[15], h.subspaceDistanceMean) &&
                   parse(f[16], h.subspaceDistanceMax) && parse(f[17], h.mahalanobisMean);
-  if (!ok) return std::nullopt;
+  bool hasIndependent = false;
+  IndependentHumanLikeness independent;
+  const bool independentOk = flag(f[19], hasIndependent) && parse(f[20], independent.authorsSubspaceDistanceMean) &&
+                             parse(f[21], independent.authorsSubspaceDistanceMax) && parse(f[22], independent.jointCoupling);
+  if (!ok || !independentOk) return std::nullopt;
+  if (hasIndependent) h.independent = independent;
   if (hasHumanLikeness) r.humanLikeness = h;
   return r;
 }

@@ -23,6 +23,8 @@ struct RunSummary {
   std::size_t succeeded = 0;  ///< solved and valid
   MetricSummary planningTime, smoothingTime, samples, roadmapNodes, pathNodes, pathLength, collisionChecks,
       subspaceDistanceMean, subspaceDistanceMax, mahalanobisMean;
+  /// The measures independent of the planner's model, over the successful runs that have them.
+  MetricSummary authorsSubspaceDistanceMean, authorsSubspaceDistanceMax, jointCoupling;
 
   double successRate() const { return runs ? static_cast<double>(succeeded) / static_cast<double>(runs) : 0.0; }
 };
