@@ -58,7 +58,6 @@ const std::set<std::string> kNotYetRelevant = {
     "cans_in_shelf/shelf_panel_left+shelf_panel_right+shelf_board_0+shelf_board_1+shelf_board_2+shelf_board_3+shelf_board_4",
     "cans_in_shelf/right_can",        // published, beside the T
     "cans_in_shelf/left_can",         // published, beside the T
-    "t_in_clutter/can",
     "t_in_clutter/mug+mug_handle",
     "t_in_clutter/plastic_mug+plastic_mug_handle",
     "t_in_clutter/lying_book",
