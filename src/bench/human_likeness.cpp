@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pmdplan/bench/human_likeness_independent.hpp"
 #include "pmdplan/io/synergy_readout.hpp"
 
 namespace pmdplan {
@@ -35,13 +36,19 @@ HumanLikeness measureHumanLikeness(const std::vector<Configuration>& path, const
                                    const HumanLikenessOptions& options) {
   if (path.empty()) throw std::invalid_argument("measureHumanLikeness: empty path");
   if (!(options.step > 0.0)) throw std::invalid_argument("measureHumanLikeness: step must be positive");
-  double distanceSum = 0.0, mahalanobisSum = 0.0, distanceMax = 0.0;
+  const std::optional<IndependentHandReference> reference = independentHandReference(space);
+  double distanceSum = 0.0, mahalanobisSum = 0.0, distanceMax = 0.0, authorsSum = 0.0, authorsMax = 0.0;
   std::size_t points = 0;
   const auto add = [&](const Configuration& q) {
     const PostureMeasure m = measurePosture(model, slots, q, options);
     distanceSum += m.subspaceDistance;
     mahalanobisSum += m.mahalanobis;
     distanceMax = std::max(distanceMax, m.subspaceDistance);
+    if (reference) {
+      const double authors = authorsSubspaceDistance(*reference, q);
+      authorsSum += authors;
+      authorsMax = std::max(authorsMax, authors);
+    }
     ++points;
   };
   add(path.front());
@@ -58,6 +65,9 @@ HumanLikeness measureHumanLikeness(const std::vector<Configuration>& path, const
   result.subspaceDistanceMean = distanceSum / static_cast<double>(points);
   result.subspaceDistanceMax = distanceMax;
   result.mahalanobisMean = mahalanobisSum / static_cast<double>(points);
+  if (reference)
+    result.independent = IndependentHumanLikeness{authorsSum / static_cast<double>(points), authorsMax,
+                                                  jointCoupling(path, space, *reference)};
   return result;
 }
 

@@ -39,6 +39,11 @@ struct Property {
   std::function<std::string(const RunRecord&)> value;
 };
 
+/// A measure that does not use the planner's model, or empty (read as NULL) when not measured.
+std::string independentValue(const RunRecord& r, double IndependentHumanLikeness::*field) {
+  return r.humanLikeness && r.humanLikeness->independent ? number(*r.humanLikeness->independent.*field) : std::string();
+}
+
 const std::vector<Property>& properties() {
   static const std::vector<Property> list = {
       {"time REAL", [](const RunRecord& r) { return number(r.planningTimeSeconds); }},
@@ -58,6 +63,11 @@ const std::vector<Property>& properties() {
        [](const RunRecord& r) { return r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMax) : std::string(); }},
       {"mahalanobis distance mean REAL",
        [](const RunRecord& r) { return r.humanLikeness ? number(r.humanLikeness->mahalanobisMean) : std::string(); }},
+      {"authors pmd distance mean REAL",
+       [](const RunRecord& r) { return independentValue(r, &IndependentHumanLikeness::authorsSubspaceDistanceMean); }},
+      {"authors pmd distance max REAL",
+       [](const RunRecord& r) { return independentValue(r, &IndependentHumanLikeness::authorsSubspaceDistanceMax); }},
+      {"joint coupling REAL", [](const RunRecord& r) { return independentValue(r, &IndependentHumanLikeness::jointCoupling); }},
       {"seed INTEGER", [](const RunRecord& r) { return std::to_string(r.seed); }},
   };
   return list;

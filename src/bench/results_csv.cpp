@@ -29,9 +29,12 @@ std::string runRecordsCsv(const std::vector<RunRecord>& records) {
   std::string csv =
       "task,planner,run,seed,solved,planning_time_s,smoothing_time_s,valid,samples,arm_trials,max_trials,final_rho_a,"
       "nodes_by_hand_dimension,roadmap_nodes,path_nodes,path_length,"
-      "collision_checks,subspace_distance_mean,subspace_distance_max,mahalanobis_mean,failure\n";
+      "collision_checks,subspace_distance_mean,subspace_distance_max,mahalanobis_mean,authors_pmd_distance_mean,"
+      "authors_pmd_distance_max,joint_coupling,failure\n";
   for (const RunRecord& r : records) {
     const bool hasPath = r.solved;
+    const IndependentHumanLikeness* independent =
+      r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
     csv += csvField(r.task) + "," + csvField(r.planner) + "," + std::to_string(r.run) + "," + std::to_string(r.seed) + "," +
            (r.solved ? "1" : "0") + "," + number(r.planningTimeSeconds) + "," + number(r.smoothingTimeSeconds) + "," +
            (r.valid ? "1" : "0") + "," + std::to_string(r.samples) + "," + std::to_string(r.armTrials) + "," +
@@ -41,7 +44,10 @@ std::string runRecordsCsv(const std::vector<RunRecord>& records) {
            std::to_string(r.collisionChecks) + "," +
            (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMean) : "") + "," +
            (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMax) : "") + "," +
-           (r.humanLikeness ? number(r.humanLikeness->mahalanobisMean) : "") + "," + csvField(r.failure) + "\n";
+           (r.humanLikeness ? number(r.humanLikeness->mahalanobisMean) : "") + "," +
+           (independent ? number(independent->authorsSubspaceDistanceMean) : "") + "," +
+           (independent ? number(independent->authorsSubspaceDistanceMax) : "") + "," +
+           (independent ? number(independent->jointCoupling) : "") + "," + csvField(r.failure) + "\n";
   }
   return csv;
 }

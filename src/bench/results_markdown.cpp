@@ -167,6 +167,11 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
       {"synergy-subspace distance, mean", [](const RunSummary& s) -> const MetricSummary& { return s.subspaceDistanceMean; }},
       {"synergy-subspace distance, max", [](const RunSummary& s) -> const MetricSummary& { return s.subspaceDistanceMax; }},
       {"Mahalanobis distance, mean", [](const RunSummary& s) -> const MetricSummary& { return s.mahalanobisMean; }},
+      {"authors' PMD-subspace distance, mean",
+       [](const RunSummary& s) -> const MetricSummary& { return s.authorsSubspaceDistanceMean; }},
+      {"authors' PMD-subspace distance, max",
+       [](const RunSummary& s) -> const MetricSummary& { return s.authorsSubspaceDistanceMax; }},
+      {"Fig. 7 joint coupling", [](const RunSummary& s) -> const MetricSummary& { return s.jointCoupling; }},
   };
   std::vector<std::vector<RunSummary>> byTask;
   for (const std::string& task : tasks) {
@@ -203,7 +208,8 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
     md += "\n";
   }
   md += "Cells: mean (median) over the successful runs; success over all runs. Human-likeness along the path "
-        "(normalised joint units; Mahalanobis under the synergy model).\n";
+        "(normalised joint units; Mahalanobis under the synergy model; the authors' PMD subspace and the Fig. 7 "
+        "joint coupling, in [-1, 1], do not use the planner's model: docs/human_likeness.md).\n";
   return md;
 }
 

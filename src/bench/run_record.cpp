@@ -98,7 +98,7 @@ std::string nodesByHandDimensionText(const std::map<int, std::size_t>& counts) {
 }
 
 std::string encodeRunRecord(const RunRecord& r) {
-  const std::vector<std::string> fields = {
+  std::vector<std::string> fields = {
       "run-record-2", escapedText(r.task), escapedText(r.planner), number(r.run), number(r.seed), r.solved ? "1" : "0",
       r.valid ? "1" : "0", number(r.planningTimeSeconds), number(r.smoothingTimeSeconds), number(r.samples),
       number(r.armTrials), number(r.maxTrials), number(r.finalArmHalfSize), nodesByHandDimensionText(r.nodesByHandDimension),
@@ -106,6 +106,13 @@ std::string encodeRunRecord(const RunRecord& r) {
       r.humanLikeness ? "1" : "0", number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0),
       number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0),
       number(r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0), escapedText(r.failure)};
+  // The measures independent of the planner's model (last, so older fields keep their places).
+  const IndependentHumanLikeness* independent =
+      r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
+  fields.push_back(independent ? "1" : "0");
+  fields.push_back(number(independent ? independent->authorsSubspaceDistanceMean : 0.0));
+  fields.push_back(number(independent ? independent->authorsSubspaceDistanceMax : 0.0));
+  fields.push_back(number(independent ? independent->jointCoupling : 0.0));
   std::string line;
   for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? std::string(1, kSeparator) : "") + fields[i];
   return line;
@@ -113,7 +120,7 @@ std::string encodeRunRecord(const RunRecord& r) {
 
 std::optional<RunRecord> decodeRunRecord(const std::string& text) {
   const auto f = split(text);
-  if (f.size() != 23 || f[0] != "run-record-2") return std::nullopt;
+  if (f.size() != 27 || f[0] != "run-record-2") return std::nullopt;
   RunRecord r;
   const auto task = unescapedText(f[1]), planner = unescapedText(f[2]), failure = unescapedText(f[22]);
   if (!task || !planner || !failure) return std::nullopt;
@@ -134,7 +141,12 @@ std::optional<RunRecord> decodeRunRecord(const std::string& text) {
                   parse(f[15], r.pathNodes) && parse(f[16], r.pathLength) && parse(f[17], r.collisionChecks) &&
                   flag(f[18], hasHumanLikeness) && parse(f[19], h.subspaceDistanceMean) && parse(f[20], h.subspaceDistanceMax) &&
                   parse(f[21], h.mahalanobisMean);
-  if (!ok) return std::nullopt;
+  bool hasIndependent = false;
+  IndependentHumanLikeness independent;
+  const bool independentOk = flag(f[23], hasIndependent) && parse(f[24], independent.authorsSubspaceDistanceMean) &&
+                             parse(f[25], independent.authorsSubspaceDistanceMax) && parse(f[26], independent.jointCoupling);
+  if (!ok || !independentOk) return std::nullopt;
+  if (hasIndependent) h.independent = independent;
   if (hasHumanLikeness) r.humanLikeness = h;
   return r;
 }

@@ -62,6 +62,15 @@ RunSummary summariseRuns(const std::vector<RunRecord>& records, const std::strin
   s.subspaceDistanceMean = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0; });
   s.subspaceDistanceMax = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0; });
   s.mahalanobisMean = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0; });
+  const auto independentMetric = [&](double IndependentHumanLikeness::*field) {
+    std::vector<double> values;
+    for (const RunRecord* r : successes)
+      if (r->humanLikeness && r->humanLikeness->independent) values.push_back(*r->humanLikeness->independent.*field);
+    return summariseValues(values);
+  };
+  s.authorsSubspaceDistanceMean = independentMetric(&IndependentHumanLikeness::authorsSubspaceDistanceMean);
+  s.authorsSubspaceDistanceMax = independentMetric(&IndependentHumanLikeness::authorsSubspaceDistanceMax);
+  s.jointCoupling = independentMetric(&IndependentHumanLikeness::jointCoupling);
   return s;
 }
 

@@ -1,6 +1,7 @@
 #include "pmdplan/synergy/kautham_sah_synergies.hpp"
 
 #include <array>
+#include <cmath>
 
 namespace pmdplan {
 namespace {
@@ -30,6 +31,19 @@ constexpr std::array<KauthamRow, 13> kRows{{
 }};
 constexpr std::array<double, 4> kSpan{1.6550, 1.4355, 0.8851, 0.7174};
 
+// Kautham's joint limits (FACTS §1), degrees, converted to positive flexion.
+JointLimit limitOf(const std::string& joint) {
+  const double degree = M_PI / 180.0;
+  const auto endsWith = [&](const char* suffix) {
+    const std::string s(suffix);
+    return joint.size() >= s.size() && joint.compare(joint.size() - s.size(), s.size(), s) == 0;
+  };
+  if (joint == "thumb_base") return {joint, 0.0, 90.0 * degree};
+  if (endsWith("_abduction")) return {joint, -15.0 * degree, 15.0 * degree};
+  if (endsWith("_proximal")) return {joint, -4.0 * degree, 75.0 * degree};
+  return {joint, 4.0 * degree, 75.0 * degree};  // medium
+}
+
 KauthamSahSynergies convert() {
   KauthamSahSynergies table;
   table.mean.resize(13);
@@ -38,6 +52,7 @@ KauthamSahSynergies convert() {
   for (int j = 0; j < 13; ++j) {
     const KauthamRow& row = kRows[static_cast<std::size_t>(j)];
     table.joints.emplace_back(row.joint);
+    table.limits.push_back(limitOf(row.joint));
     const double sign = row.flexion ? -1.0 : 1.0;
     table.mean(j) = row.flexion ? 1.0 - row.mean : row.mean;
     for (int k = 0; k < 4; ++k) table.directions(j, k) = sign * row.pmd[static_cast<std::size_t>(k)];

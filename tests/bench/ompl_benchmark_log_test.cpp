@@ -155,6 +155,8 @@ TEST(OmplBenchmarkLog, ReadsBackByTheRulesOfOmplBenchmarkStatistics) {
   EXPECT_EQ(valueOf(pmd, 0, "simplification_time"), "0.15");
   EXPECT_EQ(valueOf(pmd, 0, "solution_segments"), "3");
   EXPECT_EQ(valueOf(pmd, 0, "mahalanobis_distance_mean"), "2");
+  EXPECT_EQ(valueOf(pmd, 0, "authors_pmd_distance_max"), "0.375");
+  EXPECT_EQ(valueOf(pmd, 0, "joint_coupling"), "0.75");
   EXPECT_EQ(valueOf(rrt, 1, "solved"), "1");
   EXPECT_EQ(valueOf(rrt, 1, "correct_solution"), "0");
 }

@@ -21,7 +21,7 @@ inline RunRecord successfulRun(const std::string& task, const std::string& plann
   r.pathNodes = 4;
   r.pathLength = 1.5;
   r.collisionChecks = 5000;
-  r.humanLikeness = HumanLikeness{0.25, 0.5, 2.0};
+  r.humanLikeness = HumanLikeness{0.25, 0.5, 2.0, IndependentHumanLikeness{0.125, 0.375, 0.75}};
   return r;
 }
 

@@ -18,6 +18,8 @@ TEST(ResultsMarkdown, OneTablePerTaskWithPlannersAsColumnsAndMetricsAsRows) {
   // mean (median) over the successes; a planner without any shows a dash.
   EXPECT_NE(md.find("| planning time [s] | 2.00 (2.00) | – |"), std::string::npos) << md;
   EXPECT_NE(md.find("| Mahalanobis distance, mean | 2.00 (2.00) | – |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| authors' PMD-subspace distance, mean |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Fig. 7 joint coupling |"), std::string::npos) << md;
   EXPECT_NE(md.find("### can_in_box"), std::string::npos);
   EXPECT_NE(md.find("| success (solved and valid) | 1/1 (100 %) | no runs |"), std::string::npos) << md;
   EXPECT_LT(md.find("### can_on_table"), md.find("### can_in_box"));

@@ -26,7 +26,7 @@ RunRecord solvedRecord() {
   r.pathNodes = 5;
   r.pathLength = std::sqrt(2.0);
   r.collisionChecks = 987654321;
-  r.humanLikeness = HumanLikeness{0.0123456789, 0.5, 3.75};
+  r.humanLikeness = HumanLikeness{0.0123456789, 0.5, 3.75, IndependentHumanLikeness{0.1 + 0.7, 0.9, -1.0 / 7.0}};
   return r;
 }
 
@@ -56,7 +56,20 @@ TEST(RunRecord, EncodingRestoresEveryFieldExactly) {
   ASSERT_TRUE(back->humanLikeness.has_value());
   EXPECT_EQ(back->humanLikeness->subspaceDistanceMean, 0.0123456789);
   EXPECT_EQ(back->humanLikeness->mahalanobisMean, 3.75);
+  ASSERT_TRUE(back->humanLikeness->independent.has_value());
+  EXPECT_EQ(back->humanLikeness->independent->authorsSubspaceDistanceMean, 0.1 + 0.7);
+  EXPECT_EQ(back->humanLikeness->independent->authorsSubspaceDistanceMax, 0.9);
+  EXPECT_EQ(back->humanLikeness->independent->jointCoupling, -1.0 / 7.0);
   EXPECT_TRUE(back->succeeded());
+}
+
+TEST(RunRecord, APathWithoutTheIndependentMeasuresKeepsThemAbsent) {
+  RunRecord r = solvedRecord();
+  r.humanLikeness->independent.reset();
+  const auto back = decodeRunRecord(encodeRunRecord(r));
+  ASSERT_TRUE(back.has_value());
+  ASSERT_TRUE(back->humanLikeness.has_value());
+  EXPECT_FALSE(back->humanLikeness->independent.has_value());
 }
 
 TEST(RunRecord, FailureTextWithTabsAndNewlinesSurvives) {

@@ -24,6 +24,20 @@ TEST(RunSummary, MeanAndMedianOverSuccessesOnlyAndSuccessRateOverAllRuns) {
   EXPECT_DOUBLE_EQ(s.planningTime.median, 2.0);
   EXPECT_DOUBLE_EQ(s.samples.mean, 101.0);
   EXPECT_DOUBLE_EQ(s.mahalanobisMean.mean, 2.0);
+  EXPECT_DOUBLE_EQ(s.authorsSubspaceDistanceMean.mean, 0.125);
+  EXPECT_DOUBLE_EQ(s.authorsSubspaceDistanceMax.median, 0.375);
+  EXPECT_DOUBLE_EQ(s.jointCoupling.mean, 0.75);
+}
+
+TEST(RunSummary, TheIndependentMeasuresCountOnlyTheRunsThatHaveThem) {
+  RunRecord other = test::successfulRun("t", "pmd", 1, 1.0);
+  other.humanLikeness->independent->jointCoupling = -0.25;
+  RunRecord without = test::successfulRun("t", "pmd", 2, 1.0);
+  without.humanLikeness->independent.reset();
+  const RunSummary s = summariseRuns({test::successfulRun("t", "pmd", 0, 1.0), other, without}, "t", "pmd");
+  EXPECT_EQ(s.mahalanobisMean.count, 3u);
+  EXPECT_EQ(s.jointCoupling.count, 2u);
+  EXPECT_DOUBLE_EQ(s.jointCoupling.mean, 0.25);
 }
 
 TEST(RunSummary, MedianOfAnEvenCountIsTheMiddlePairsMean) {

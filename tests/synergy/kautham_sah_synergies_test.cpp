@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace pmdplan {
 namespace {
 
@@ -20,6 +22,20 @@ TEST(KauthamSahSynergies, ConvertedToPositiveFlexion) {
   EXPECT_NEAR(scale, 1.0, 2e-3);
   EXPECT_NEAR(table.directions(8, 0), 0.4884 * scale, 1e-12);
   EXPECT_NEAR(table.directions(10, 0), -0.1741 * scale, 1e-12);
+}
+
+TEST(KauthamSahSynergies, NormalisedOverKauthamsLimitsInOurSigns) {
+  const auto& table = kauthamSahSynergies();
+  ASSERT_EQ(table.limits.size(), table.joints.size());
+  const double degree = M_PI / 180.0;
+  for (std::size_t j = 0; j < table.joints.size(); ++j) EXPECT_EQ(table.limits[j].name, table.joints[j]);
+  EXPECT_NEAR(table.limits[0].upper, 90 * degree, 1e-12);   // thumb_base 0..90
+  EXPECT_NEAR(table.limits[1].lower, -15 * degree, 1e-12);  // thumb_abduction -15..15
+  EXPECT_NEAR(table.limits[2].lower, -4 * degree, 1e-12);   // thumb_proximal -4..75
+  EXPECT_NEAR(table.limits[3].lower, 4 * degree, 1e-12);    // thumb_medium 4..75
+  EXPECT_NEAR(table.limits[12].upper, 75 * degree, 1e-12);  // ring_medium
+  // Kautham's p = 0 is a flexion joint's flexed end, ours its extended end (p = 1 - p_K).
+  EXPECT_NEAR(table.limits[8].denormalise(table.mean(8)), (-4 + (1 - 0.5579) * 79) * degree, 1e-12);
 }
 
 TEST(KauthamSahSynergies, UnitVectorsZeroOnThumbBaseAndMiddleAbduction) {

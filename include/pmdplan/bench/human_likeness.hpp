@@ -8,6 +8,9 @@
 // are arc-length weighted and a long segment through odd postures weighs more than a short one.
 // The distance of a straight joint-space segment from the (affine) subspace is convex along the
 // segment, so the maximum sits at a node and the walk (which includes the nodes) finds it exactly.
+// For a robot with the SAH's hand joints the same walk also measures the distance from the
+// authors' PMD subspace, and the path's joint coupling (human_likeness_independent.hpp): measures
+// that do not use `model`, so a path is not judged only by the model the PMD planner sampled.
 #include <vector>
 
 #include "pmdplan/bench/run_record.hpp"

@@ -3,7 +3,8 @@
 // package ompl-demos) turns into the database Planner Arena shows. One experiment per task: the
 // format holds one experiment per file. Run properties: time, solved, correct solution (the
 // exact re-validation), status, simplification time (our smoothing), graph states, solution
-// length and segments, samples, collision checks, the three human-likeness numbers and the seed.
+// length and segments, samples, collision checks, the three human-likeness numbers of the
+// planner's model, the three that do not use it (docs/human_likeness.md) and the seed.
 #include <filesystem>
 #include <string>
 #include <vector>

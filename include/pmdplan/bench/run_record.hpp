@@ -10,6 +10,18 @@
 
 namespace pmdplan {
 
+/// Human-likeness measured without the planner's synergy model (docs/human_likeness.md).
+struct IndependentHumanLikeness {
+  /// Distance from the subspace of the authors' real-data PMDs (thumb base plus PMD 1-4 of the
+  /// Kautham table), normalised joint units over the table's limits: mean along the path and max.
+  double authorsSubspaceDistanceMean = 0.0;
+  double authorsSubspaceDistanceMax = 0.0;
+  /// Agreement of the hand's joint motion with the signs of the paper's Fig. 7 correlations, in
+  /// [-1, 1]: 1 every correlated pair moves as the paper's correlation says, 0 as if independent,
+  /// -1 against it (0 also when none of those joints moves).
+  double jointCoupling = 0.0;
+};
+
 /// How far a path's hand postures are from the human data (human_likeness.hpp).
 struct HumanLikeness {
   /// Distance from the synergy subspace the PMD planner samples, normalised joint units.
@@ -17,6 +29,8 @@ struct HumanLikeness {
   double subspaceDistanceMax = 0.0;
   /// Mahalanobis distance under the synergy model, mean along the path.
   double mahalanobisMean = 0.0;
+  /// Absent for a robot without the SAH's 13 hand joints (named as in the Kautham table).
+  std::optional<IndependentHumanLikeness> independent;
 };
 
 struct RunRecord {

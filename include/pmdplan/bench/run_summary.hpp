@@ -27,6 +27,8 @@ struct RunSummary {
   /// Per hand dimension (2 = thumb base + 1 PMD, ...): the share of a run's sampled nodes that
   /// dimension produced, in %, over the successful runs that sampled any node (Table 2's rows).
   std::map<int, MetricSummary> nodeShareByHandDimension;
+  /// The measures independent of the planner's model, over the successful runs that have them.
+  MetricSummary authorsSubspaceDistanceMean, authorsSubspaceDistanceMax, jointCoupling;
 
   double successRate() const { return runs ? static_cast<double>(succeeded) / static_cast<double>(runs) : 0.0; }
 };

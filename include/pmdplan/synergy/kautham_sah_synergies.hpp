@@ -7,12 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "pmdplan/core/joint_limit.hpp"
+
 namespace pmdplan {
 
 struct KauthamSahSynergies {
   /// The 13 SAH hand joints in the paper's order (thumb_base … ring_medium).
   std::vector<std::string> joints;
-  /// Mean posture, normalised units over the joint limits, our convention.
+  /// The limits the table's units are normalised over: Kautham's, in our convention (radians;
+  /// thumb_base 0..90 deg, abduction -15..15, proximal -4..75, medium 4..75), one per joint.
+  JointLimits limits;
+  /// Mean posture, normalised units over `limits`, our convention.
   Eigen::VectorXd mean;
   /// Columns: PMD 1-4 (unit vectors, our convention), zero on thumb_base and middle_abduction.
   Eigen::MatrixXd directions;
