@@ -43,7 +43,7 @@ struct CanOnTable {
   }
   std::vector<Configuration> configurations(const og::PathGeometric& path) const {
     std::vector<Configuration> points;
-    for (const ob::State* state : path.getStates()) points.push_back(configurationOfOmplState(space, state));
+    for (std::size_t i = 0; i < path.getStateCount(); ++i) points.push_back(configurationOfOmplState(space, path.getState(i)));
     return points;
   }
 };
