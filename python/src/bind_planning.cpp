@@ -50,6 +50,17 @@ std::string pairsText(const CollisionReport& report) {
   return text;
 }
 
+/// Throws the CLI's InputError if the task's start or goal collides (exact checker, all pairs).
+void requireFreeEnds(const Task& task, PyCollisionChecker& checker) {
+  py::gil_scoped_release release;
+  std::lock_guard lock(checker.mutex);
+  for (const auto& [label, q] : {std::pair{"start", &task.start}, std::pair{"goal", &task.goal}}) {
+    const auto report = checker.checking->exact().check(*q);
+    if (!report.free())
+      throw InputError(task.file.string(), label, std::string("the ") + label + " configuration is in collision: " + pairsText(report));
+  }
+}
+
 /// The checker to plan with: the caller's, or a new one of the named kind.
 std::shared_ptr<PyCollisionChecker> checkerFor(const PyTask& task, py::handle checker, double toleranceMm) {
   if (py::isinstance<PyCollisionChecker>(checker)) {
@@ -139,17 +150,13 @@ PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle set
   const auto entry = findPlanner(planner);
   if (!entry) throw InputError("", "--planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
   auto checking = checkerFor(task, checker, toleranceMm);
-  {
-    py::gil_scoped_release release;
-    std::lock_guard lock(checking->mutex);
-    for (const auto& [label, q] : {std::pair{"start", &task.task->start}, std::pair{"goal", &task.task->goal}}) {
-      const auto report = checking->checking->exact().check(*q);
-      if (!report.free())
-        throw InputError(task.task->file.string(), label, std::string("the ") + label + " configuration is in collision: " + pairsText(report));
-    }
-  }
+  // The CLI's message for a colliding start or goal: checked first for OMPL's planners (they do
+  // not check them), after the run for ours (they stop at once with that status; no cost otherwise).
+  if (entry->family == PlannerFamily::Ompl) requireFreeEnds(*task.task, *checking);
   PyPlanResult result = entry->family == PlannerFamily::Ompl ? planOmpl(task, *checking, *entry, seed, timeLimit)
                                                               : planPmd(task, *checking, *entry, settings, synergies, seed, timeLimit);
+  if (result.statistics.status == PlannerStatus::InvalidStart || result.statistics.status == PlannerStatus::InvalidGoal)
+    requireFreeEnds(*task.task, *checking);
   result.task = task.task->name;
   result.planner = entry->name;
   result.jointNames = task.task->robot->activeJointNames();
