@@ -26,6 +26,6 @@ run_step("build" ${CMAKE_COMMAND} --build ${consumer})
 # The installed data folder, not the source tree the library was built from.
 run_step("run" ${CMAKE_COMMAND} -E env PMDPLAN_DATA_DIR=${prefix}/share/pmdplan/data ${consumer}/plan_can_on_table)
 message(STATUS "consumer output:\n${step_output}")
-if(NOT step_output MATCHES "solved")
+if(NOT step_output MATCHES "can_on_table: solved" OR NOT step_output MATCHES "OMPL PMD: solved")
   message(FATAL_ERROR "the consumer did not report a solved plan")
 endif()

@@ -50,6 +50,15 @@ std::vector<bool> checkAll(PyCollisionChecker& c, const std::vector<Configuratio
   return result;
 }
 
+/// `check(checking, q)` on one configuration argument, with the GIL released and the checker locked.
+template <typename Check>
+auto onConfiguration(PyCollisionChecker& c, py::handle q, Check check) {
+  const Configuration configuration = jointValuesFrom(jointsOf(c), q, "configuration");
+  py::gil_scoped_release release;
+  std::lock_guard lock(c.mutex);
+  return check(*c.checking, configuration);
+}
+
 }  // namespace
 
 CheckerKind parseCheckerOption(const std::string& name) { return checkerKindFrom(name); }
@@ -74,19 +83,17 @@ void bindCollision(py::module_& m) {
       .def(
           "is_valid",
           [](PyCollisionChecker& c, py::handle q) {
-            const Configuration configuration = jointValuesFrom(jointsOf(c), q, "configuration");
-            py::gil_scoped_release release;
-            std::lock_guard lock(c.mutex);
-            return c.checking->states().isValid(configuration);
+            return onConfiguration(c, q, [](CollisionChecking& checking, const Configuration& configuration) {
+              return checking.states().isValid(configuration);
+            });
           },
           py::arg("configuration"), "True if the configuration (array or {joint: radians}) is free of collisions.")
       .def(
           "colliding_pairs",
           [](PyCollisionChecker& c, py::handle q) {
-            const Configuration configuration = jointValuesFrom(jointsOf(c), q, "configuration");
-            py::gil_scoped_release release;
-            std::lock_guard lock(c.mutex);
-            return c.checking->exact().check(configuration).pairs;
+            return onConfiguration(c, q, [](CollisionChecking& checking, const Configuration& configuration) {
+              return checking.exact().check(configuration).pairs;
+            });
           },
           py::arg("configuration"), "Every colliding pair (link - link or link - obstacle names), by the exact checker; [] when free.")
       .def(
