@@ -1,6 +1,7 @@
 # ctest script (cmake -P): installs the built library into a fresh temporary prefix, then
-# configures, builds and runs the out-of-tree consumer examples/cpp/ against that prefix only.
-#   -DPMDPLAN_BINARY_DIR=… -DPMDPLAN_SOURCE_DIR=… [-DCONSUMER_GENERATOR=Ninja]
+# configures, builds and runs the out-of-tree consumer examples/cpp/ against that prefix only; with
+# PYTHON, plans with the Python module installed there too.
+#   -DPMDPLAN_BINARY_DIR=… -DPMDPLAN_SOURCE_DIR=… [-DCONSUMER_GENERATOR=Ninja] [-DPYTHON=/usr/bin/python3]
 set(work ${PMDPLAN_BINARY_DIR}/test-output/cpp-consumer)
 set(prefix ${work}/prefix)
 set(consumer ${work}/build)
@@ -28,4 +29,15 @@ run_step("run" ${CMAKE_COMMAND} -E env PMDPLAN_DATA_DIR=${prefix}/share/pmdplan/
 message(STATUS "consumer output:\n${step_output}")
 if(NOT step_output MATCHES "can_on_table: solved" OR NOT step_output MATCHES "OMPL PMD: solved")
   message(FATAL_ERROR "the consumer did not report a solved plan")
+endif()
+
+if(PYTHON)
+  # (no semicolons in the code: run_step's argument list would split there)
+  run_step("python import" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/lib/python3/dist-packages
+           PMDPLAN_DATA_DIR=${prefix}/share/pmdplan/data ${PYTHON} -c
+           "import pmdplan\nr = pmdplan.plan(pmdplan.Task.load('can_on_table'), seed=1)\nprint('python:', pmdplan.__file__, r.status)")
+  message(STATUS "${step_output}")
+  if(NOT step_output MATCHES "${prefix}/lib/python3/dist-packages/pmdplan/__init__.py solved")
+    message(FATAL_ERROR "the installed Python module was not the one imported, or did not solve")
+  endif()
 endif()
