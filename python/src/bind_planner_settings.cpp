@@ -28,14 +28,24 @@ HandSamplingMode modeFrom(const std::string& planner) {
 
 }  // namespace
 
-PlannerParameters plannerParametersFrom(py::handle settings, HandSamplingMode mode) {
-  if (settings.is_none()) return PlannerParameters::defaultsFor(mode);
-  try {
-    return settings.cast<PlannerParameters>();
-  } catch (const py::cast_error&) {
-    throw InputError("", "settings", "expected a pmdplan.PlannerSettings");
+PlannerParameters plannerParametersFrom(py::handle settings, HandSamplingMode mode, std::optional<std::uint64_t> seed,
+                                        std::optional<double> timeLimit) {
+  PlannerParameters parameters = PlannerParameters::defaultsFor(mode);
+  if (!settings.is_none()) {
+    try {
+      parameters = settings.cast<PlannerParameters>();
+    } catch (const py::cast_error&) {
+      throw InputError("", "settings", "expected a pmdplan.PlannerSettings");
+    }
   }
+  if (seed) parameters.seed = *seed;
+  if (timeLimit) parameters.timeLimit = *timeLimit;
+  return parameters;
 }
+
+std::uint64_t seedOf(const PlannerParameters& parameters) { return parameters.seed; }
+
+double defaultTimeLimit() { return PlannerParameters{}.timeLimit; }
 
 void checkPlannerParameters(const PlannerParameters& parameters) {
   try {

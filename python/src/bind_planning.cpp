@@ -91,9 +91,7 @@ PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const Plan
   if (entry.mode == HandSamplingMode::Synergy) model = synergiesFor(*task.task, synergies);
   TaskPlanningOptions options;
   options.mode = entry.mode;
-  options.parameters = plannerParametersFrom(settings, entry.mode);
-  if (seed) options.parameters.seed = *seed;
-  if (timeLimit) options.parameters.timeLimit = *timeLimit;
+  options.parameters = plannerParametersFrom(settings, entry.mode, seed, timeLimit);
   options.synergies = model ? model->model.get() : nullptr;
   checkPlannerParameters(options.parameters);
   PyPlanResult result;
@@ -108,7 +106,7 @@ PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const Plan
     if (!e.file().empty() || !model) throw;
     throw InputError(model->source, e.field(), e.message());  // the sampler names the model's field
   }
-  result.seed = options.parameters.seed;
+  result.seed = seedOf(options.parameters);
   result.path = std::move(planned.path);
   result.statistics = planned.statistics;
   return result;
@@ -117,7 +115,7 @@ PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const Plan
 PyPlanResult planOmpl(const PyTask& task, PyCollisionChecker& checker, const PlannerEntry& entry, std::optional<std::uint64_t> seed,
                       std::optional<double> timeLimit) {
   const std::uint64_t runSeed = seed.value_or(1);
-  const double limit = timeLimit.value_or(PlannerParameters{}.timeLimit);
+  const double limit = timeLimit.value_or(defaultTimeLimit());
   if (runSeed == 0) throw InputError("", "--seed", "OMPL ignores seed 0; expected a positive seed");
   if (!(limit > 0.0)) throw InputError("", "--time-limit", "expected a positive number of seconds");
   const PlanningSpace space = planningSpaceFromRobot(*task.task->robot);

@@ -102,13 +102,15 @@ Eigen::Isometry3d placementFrom(py::handle value, const std::string& field) {
   if (value.is_none()) return Eigen::Isometry3d::Identity();
   if (py::isinstance<py::dict>(value))
     return placementOfDict(mapWithKeys(value, {"xyz", "rpy_deg"}, field, "{xyz, optional rpy_deg} or a 4x4 matrix"), field);
-  const Eigen::Matrix4d matrix = [&] {
-    try {
-      return value.cast<Eigen::Matrix4d>();
-    } catch (const py::cast_error&) {
-      throw InputError("", field, "expected {xyz: [x, y, z], rpy_deg: [r, p, y]} or a 4x4 homogeneous matrix");
-    }
-  }();
+  const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
+  if (!array || array.ndim() != 2 || array.shape(0) != 4 || array.shape(1) != 4) {
+    PyErr_Clear();
+    throw InputError("", field, "expected {xyz: [x, y, z], rpy_deg: [r, p, y]} or a 4x4 homogeneous matrix");
+  }
+  Eigen::Matrix4d matrix;
+  const auto cells = array.unchecked<2>();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) matrix(r, c) = cells(r, c);
   const Eigen::Matrix3d rotation = matrix.topLeftCorner<3, 3>();
   if (!matrix.allFinite() || !(rotation * rotation.transpose()).isIdentity(1e-9) || rotation.determinant() < 0.0 ||
       !matrix.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1)))
