@@ -20,6 +20,7 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "ompl_checker_adapters.hpp"
+#include "pmdplan/bench/ompl_task_space.hpp"
 
 namespace pmdplan {
 namespace {
@@ -62,13 +63,8 @@ OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSp
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
   ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
 
-  const auto stateSpace = std::make_shared<ob::RealVectorStateSpace>(static_cast<unsigned>(space.dof()));
-  stateSpace->setBounds(0.0, 1.0);
-  const auto si = std::make_shared<ob::SpaceInformation>(stateSpace);
-  const auto stateChecker = std::make_shared<OmplStateChecker>(si, space, states);
-  si->setStateValidityChecker(stateChecker);
-  si->setMotionValidator(std::make_shared<OmplMotionChecker>(si, space, *stateChecker, motions));
-  si->setup();
+  const OmplTaskSpace taskSpace = makeOmplTaskSpace(space, states, motions);
+  const ob::SpaceInformationPtr& si = taskSpace.spaceInformation;
 
   ob::ScopedState<> startState(si), goalState(si);
   setStateFromConfiguration(space, start, startState.get());
@@ -86,7 +82,7 @@ OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSp
   result.planningTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   result.status = status.asString();
   result.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
-  result.stateChecks = stateChecker->checks();
+  result.stateChecks = taskSpace.stateChecks();
   result.motionChecks = motions.statesChecked() - motionChecksBefore;
   ob::PlannerData data(si);
   planner->getPlannerData(data);
