@@ -35,6 +35,7 @@ struct PyPlanResult {
   std::uint64_t seed = 0;
   std::vector<std::string> jointNames;
   std::vector<Configuration> path;
+  std::optional<std::size_t> closingFrom;  ///< a grasp path's closing phase (docs/grasp_goals.md)
   PlanningStatistics statistics;
   std::vector<MimicRelation> mimic;
   double callSeconds = 0.0;  ///< wall time of the library call alone (planTask or planWithOmpl)
@@ -42,12 +43,6 @@ struct PyPlanResult {
 
 py::object jsonToPython(const nlohmann::ordered_json& document) {
   return py::module_::import("json").attr("loads")(document.dump());
-}
-
-std::string pairsText(const CollisionReport& report) {
-  std::string text;
-  for (const auto& [a, b] : report.pairs) text += (text.empty() ? "" : ", ") + a + " - " + b;
-  return text;
 }
 
 /// Throws the CLI's InputError if the task's start or goal collides (exact checker, all pairs).
@@ -108,6 +103,7 @@ PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const Plan
   }
   result.seed = seedOf(options.parameters);
   result.path = std::move(planned.path);
+  result.closingFrom = planned.closingFrom;
   result.statistics = planned.statistics;
   return result;
 }
@@ -225,7 +221,7 @@ void bindResult(py::module_& m) {
           "save",
           [](const PyPlanResult& r, const std::filesystem::path& file) {
             if (!r.statistics.solved()) throw InputError(file.string(), "", "the run did not solve: there is no path to write");
-            writePathFile(file, PathFile{r.task, r.planner, r.seed, r.jointNames, r.path, r.mimic, r.statistics});
+            writePathFile(file, PathFile{r.task, r.planner, r.seed, r.jointNames, r.path, r.closingFrom, r.mimic, r.statistics});
           },
           py::arg("file"), "Writes the path file (JSON), as `pmdplan plan -o` does.")
       .def("__repr__", [](const PyPlanResult& r) {

@@ -13,6 +13,13 @@ TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const
   options.parameters.check();
   auto sampler = makeHandSampler(options.mode, space, options.synergies, options.parameters.pmdBox);
   TaskPlanningResult result;
+  // A start in collision is reported as the planner reports it, before the goal is examined as
+  // a grasp (which refuses a goal in contact with anything but the target).
+  if (!checking.states().isValid(task.start)) {
+    result.status = result.statistics.status = PlannerStatus::InvalidStart;
+    result.statistics.stateChecks = 1;
+    return result;
+  }
   const auto began = std::chrono::steady_clock::now();
   result.grasp = graspApproach(task, checking.exact(), checking.tolerance(), options.grasp);
   const double graspSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
