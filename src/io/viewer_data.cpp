@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_robot_match.hpp"
 #include "pmdplan/io/robot_mimic.hpp"
 #include "pmdplan/io/statistics_json.hpp"
@@ -112,7 +113,43 @@ Json synergiesJson(const SynergyModel& model, const std::vector<int>& slots, con
                                {"distance_from_subspace", std::move(distance)}}}};
 }
 
+/// A trajectory's points are the states; its ends are the only waypoints it keeps.
+PathTimeline trajectoryTimeline(const TrajectoryFile& trajectory, const RobotModel& robot,
+                                const std::vector<Configuration>& positions, const std::string& file) {
+  if (trajectory.trajectory.jointNames != robot.activeJointNames())
+    throw InputError(file, "joint_names", "expected the robot's active joints in its configuration order");
+  PathTimeline timeline;
+  timeline.states = positions;
+  timeline.waypointStates = {0, static_cast<int>(positions.size()) - 1};
+  return timeline;
+}
+
+Json trajectoryTimingJson(const TrajectoryFile& trajectory) {
+  Json times = Json::array(), velocities = Json::array();
+  for (const TimedState& point : trajectory.trajectory.points) {
+    times.push_back(point.time);
+    velocities.push_back(numbers(point.velocity));
+  }
+  return Json{{"duration", trajectory.trajectory.points.back().time},
+              {"blend_tolerance", trajectory.blendTolerance},
+              {"velocity_limits", trajectory.velocityLimits},
+              {"acceleration_limits", trajectory.accelerationLimits},
+              {"times", std::move(times)},
+              {"velocities", std::move(velocities)}};
+}
+
 }  // namespace
+
+PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory) {
+  PathFile path;
+  path.task = trajectory.task;
+  path.planner = trajectory.planner;
+  path.seed = trajectory.seed;
+  path.jointNames = trajectory.trajectory.jointNames;
+  path.mimic = trajectory.mimic;
+  for (const TimedState& point : trajectory.trajectory.points) path.points.push_back(point.position);
+  return path;
+}
 
 ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies, const ViewerSources& sources,
                       const ViewerDataParameters& parameters) {
@@ -120,7 +157,14 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
   const std::vector<Configuration> waypoints = pathConfigurations(path, robot, sources.pathFile.string());
   const std::vector<int> slots =
       synergies ? modelJointSlots(*synergies, robot, sources.synergyFile.string()) : std::vector<int>{};
-  const PathTimeline timeline = pathTimeline(waypoints, robot, parameters.timeline);
+  PathTimeline timeline;
+  Json timing;
+  if (parameters.trajectory) {
+    timeline = trajectoryTimeline(*parameters.trajectory, robot, waypoints, sources.pathFile.string());
+    timing = trajectoryTimingJson(*parameters.trajectory);
+  } else {
+    timeline = pathTimeline(waypoints, robot, parameters.timeline);
+  }
 
   ViewerData data;
   Json states = Json::array();
@@ -140,7 +184,8 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
                           {"waypoint_count", waypoints.size()},
                           {"state_spacing", parameters.timeline.stateSpacing},
                           {"states", std::move(states)},
-                          {"waypoint_states", timeline.waypointStates}};
+                          {"waypoint_states", timeline.waypointStates},
+                          {"timing", std::move(timing)}};
   document["synergies"] = synergies ? synergiesJson(*synergies, slots, timeline, parameters.plannerDirections) : Json();
   return data;
 }

@@ -10,7 +10,9 @@
 //   robot     {name, palm_link, urdf (the URDF text), joint_names, lower, upper (active joints,
 //              rad), hand_joints, mimic: {joint: [source, multiplier, offset]}}
 //   path      {planner, seed, statistics, waypoint_count, state_spacing, states: [[rad ...]],
-//              waypoint_states: [state index of each waypoint]}
+//              waypoint_states: [state index of each waypoint],
+//              timing: null, or for a timed trajectory {duration, blend_tolerance, velocity_limits,
+//                      acceleration_limits, times: [s per state], velocities: [[rad/s ...]]}}
 //   synergies {provenance, joint_names, lower, upper, own_axis_joints, orthonormal, mean,
 //              directions: [[...]], sigma, variance_fraction (normalised units), planner_directions,
 //              readout: {own_axis, coefficients, distance_from_subspace}: one row per state}
@@ -25,6 +27,7 @@
 
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/io/path_timeline.hpp"
+#include "pmdplan/io/trajectory_file.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
 #include "pmdplan/world/task.hpp"
 
@@ -40,7 +43,13 @@ struct ViewerDataParameters {
   /// The PMDs the planner samples (thumb base + this many): the viewer's default for the
   /// distance-from-subspace readout. Capped by the model's direction count.
   int plannerDirections = 4;
+  /// A timed trajectory (the viewer plays it in real time): its points are the states, and the
+  /// path given to viewerData() is trajectoryAsPathFile() of it. Null for a path file.
+  const TrajectoryFile* trajectory = nullptr;
 };
+
+/// The trajectory's positions as a path file's points (for viewerData with `trajectory` set).
+PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory);
 
 /// A file the viewer folder needs besides the data (a mesh obstacle's geometry).
 struct ViewerFolderFile {
