@@ -11,6 +11,7 @@ import { createJointTable } from './joint_table.js';
 import { createSynergyReadout } from './synergy_readout.js';
 import { createSynergyExplorer } from './synergy_explorer.js';
 import { createPathPlayer } from './path_player.js';
+import { createJointPlots } from './joint_plots.js';
 
 const api = { ready: false, error: null };
 window.pmdplanViewer = api;
@@ -56,7 +57,10 @@ function describe(data, notes) {
   byId('title').textContent = data.title;
   const s = data.path.statistics;
   const statistics = s.status === 'not_run' ? '' : ` · ${s.path_nodes} path nodes, length ${s.path_length.toFixed(3)}`;
-  byId('subtitle').textContent = `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
+  const timing = data.path.timing;
+  byId('subtitle').textContent = timing
+    ? `timed trajectory: ${timing.duration.toFixed(3)} s, ${data.path.states.length} points, blend tolerance ${timing.blend_tolerance} rad`
+    : `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
   const lines = [
     `path: ${data.sources.path_file} (${data.path.planner}, seed ${data.path.seed})`,
     `task: ${data.task.name} (${data.sources.task_file})${data.task.description ? ' · ' + data.task.description : ''}`,
@@ -80,6 +84,7 @@ function start(data) {
   const jointTable = createJointTable(byId('joint-table'), data.robot, robot);
   const ghosts = createGhostTrail(view.scene, robot);
   const states = data.path.states;
+  const plots = createJointPlots(data.path, data.robot);
 
   let explorerPosture = null;
   let player = null;
@@ -90,6 +95,7 @@ function start(data) {
     robot.object.updateMatrixWorld(true);
     jointTable.update();
     if (readout) readout.show(state);
+    if (plots) plots.show(state);
   }
   let explorer = null;
   if (data.synergies) {
@@ -150,6 +156,10 @@ function start(data) {
     get playing() { return player.playing; },
     get renderCount() { return view.renderCount; },
     get ghostCount() { return ghostCount; },
+    timed: Boolean(data.path.timing),
+    duration: data.path.timing ? data.path.timing.duration : null,
+    stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),
+    peakVelocityFraction: () => (plots ? plots.peakVelocityFraction() : null),
     notes,
     setState: (index) => player.go(index),
     jointValue: (name) => robot.jointValue(name),

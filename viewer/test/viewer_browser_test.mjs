@@ -2,9 +2,10 @@
 // SwiftShader WebGL) opens it, waits until it reports ready, and checks what a person would see:
 // the canvas is not blank, moving the slider changes a finger joint and the image, the coupled
 // distal joint follows, keys step, the synergy readout and explorer work, play advances. The
-// page also has to work opened straight from the disk (file://). Screenshots go to --work.
+// page also has to work opened straight from the disk (file://). With --trajectory, the timed
+// trajectory of the same path plays in real time with its joint plots. Screenshots go to --work.
 //
-//   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR
+//   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR [--trajectory T.json]
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -23,7 +24,7 @@ function options() {
     const i = args.indexOf(name);
     return i >= 0 ? args[i + 1] : undefined;
   };
-  const o = { cli: value('--cli'), path: value('--path'), work: value('--work') };
+  const o = { cli: value('--cli'), path: value('--path'), work: value('--work'), trajectory: value('--trajectory') };
   if (!o.cli || !o.path || !o.work) {
     console.error('usage: viewer_browser_test.mjs --cli PMDPLAN --path PATH.json --work DIR');
     process.exit(2);
@@ -76,6 +77,47 @@ async function canvasAfterRender(page, before) {
 
 const renderCount = (page) => page.evaluate(() => window.pmdplanViewer.renderCount);
 const viewerValue = (page, fn, argument) => page.evaluate(fn, argument);
+
+/// A timed trajectory: the clock in the label, plots drawn, playback in real time (the trajectory's
+/// time advances with the wall clock at 1×), velocities within the limits.
+async function checkTrajectory(browser, o) {
+  const folder = resolve(o.work, 'trajectory-viewer');
+  const { server, url } = await serveViewer(o.cli, o.trajectory, folder);
+  try {
+    const { page, problems } = await openViewer(browser, url);
+    const info = await viewerValue(page, () => ({ timed: window.pmdplanViewer.timed, duration: window.pmdplanViewer.duration,
+      count: window.pmdplanViewer.stateCount, peak: window.pmdplanViewer.peakVelocityFraction() }));
+    assert.equal(info.timed, true, 'the trajectory viewer knows the path is timed');
+    assert.ok(info.duration > 0.1, `a trajectory of ${info.duration} s`);
+    assert.ok(info.peak <= 1 + 1e-4 && info.peak > 0.1, `peak velocity / limit ${info.peak}`);
+    assert.equal(await page.locator('#plots-panel').isVisible(), true, 'the joint plots are shown');
+    for (const id of ['#position-plot', '#velocity-plot']) {
+      const plot = imageContent(decodePng(await page.locator(id).screenshot()));
+      assert.ok(plot.foregroundShare > 0.01 && plot.distinctColours > 5, `${id} looks empty`);
+    }
+    await page.locator('#loop').uncheck();
+    const before = await viewerValue(page, () => performance.now());
+    await page.locator('#play').click();
+    await page.waitForFunction(() => !window.pmdplanViewer.playing, null, { timeout: 60_000 });
+    const wall = ((await viewerValue(page, () => performance.now())) - before) / 1000;
+    const last = await viewerValue(page, () => window.pmdplanViewer.state);
+    assert.equal(last, info.count - 1, 'playing ends at the last state');
+    const ratio = wall / info.duration;
+    log(`trajectory: ${info.duration.toFixed(3)} s played in ${wall.toFixed(3)} s of wall clock (ratio ${ratio.toFixed(2)}), peak velocity ${(100 * info.peak).toFixed(1)} % of a limit`);
+    assert.ok(ratio > 0.8 && ratio < 2.5, `real-time playback: ${info.duration} s of trajectory took ${wall} s`);
+    const label = await page.locator('#state-label').innerText();
+    assert.ok(label.includes(`of ${info.duration.toFixed(2)} s`), `the label shows the clock: ${label}`);
+    const frames = await renderCount(page);
+    await page.locator('#timeline').fill(String(Math.floor(info.count / 2)));
+    await page.waitForFunction((n) => window.pmdplanViewer.renderCount > n, frames);
+    await page.screenshot({ path: join(o.work, 'viewer-trajectory.png') });
+    log(`screenshot ${join(o.work, 'viewer-trajectory.png')}`);
+    assert.deepEqual(problems, [], `the trajectory page reported problems:\n${problems.join('\n')}`);
+    await page.close();
+  } finally {
+    server.kill('SIGTERM');
+  }
+}
 
 async function main() {
   const o = options();
@@ -174,6 +216,7 @@ async function main() {
     const fromDisk = await openViewer(browser, pathToFileURL(join(folder, 'index.html')).href);
     assert.deepEqual(fromDisk.problems, [], `from file://:\n${fromDisk.problems.join('\n')}`);
     log('viewer ready from file://');
+    if (o.trajectory) await checkTrajectory(browser, o);
   } finally {
     await browser.close();
     server.kill('SIGTERM');
