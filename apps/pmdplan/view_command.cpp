@@ -10,6 +10,7 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/path_robot_match.hpp"
 #include "pmdplan/io/trajectory_file.hpp"
 #include "pmdplan/io/static_file_server.hpp"
 #include "pmdplan/io/viewer_data.hpp"
@@ -50,6 +51,13 @@ int run(const Options& o) {
   if (isTrajectoryFileText(text)) trajectory = parseTrajectoryFile(text, o.path);
   const PathFile path = trajectory ? trajectoryAsPathFile(*trajectory) : parsePathFile(text, o.path);
   const Task task = loadPathTask(o, path);
+  if (!o.task.empty() && task.name != path.task) {
+    // Another task than the path's own: only if the path starts and ends where that task does.
+    const auto warnings = pathEndWarnings(task, pathConfigurations(path, *task.robot, o.path));
+    if (!warnings.empty())
+      throw InputError(o.path, "task", "the path was planned for task '" + path.task + "', not --task " + task.name + ": " +
+                                           warnings.front() + "; view it with its own task");
+  }
   std::filesystem::path synergyFile = o.synergies;
   if (synergyFile.empty() && std::filesystem::exists(defaultSynergyModelPath(task.robot->name())))
     synergyFile = defaultSynergyModelPath(task.robot->name());

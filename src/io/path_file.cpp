@@ -50,6 +50,9 @@ PathFile parsePathFile(const std::string& text, const std::string& file) {
     document = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& error) {
     throw InputError(file, "", std::string("not valid JSON (") + error.what() + ")");
+  } catch (const nlohmann::json::out_of_range& error) {
+    // A number no double holds (1e999): the parser stops at it.
+    throw InputError(file, "", std::string("a number is out of range; expected finite numbers (") + error.what() + ")");
   }
   const Place root{file, ""};
   requireObject(document, root);

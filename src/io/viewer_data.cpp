@@ -1,5 +1,6 @@
 #include "pmdplan/io/viewer_data.hpp"
 
+#include <cmath>
 #include <algorithm>
 #include <type_traits>
 
@@ -140,6 +141,19 @@ Json trajectoryTimingJson(const TrajectoryFile& trajectory) {
 
 }  // namespace
 
+std::vector<std::string> pathEndWarnings(const Task& task, const std::vector<Configuration>& points) {
+  std::vector<std::string> warnings;
+  const auto check = [&](const Configuration& q, const Configuration& expected, const char* end, const char* what) {
+    const double off = (q - expected).cwiseAbs().maxCoeff();
+    if (off > kEndTolerance)
+      warnings.push_back(std::string("the path's ") + end + " is not task " + task.name + "'s " + what + " (a joint differs by " +
+                         std::to_string(off * 180.0 / M_PI) + " deg)");
+  };
+  check(points.front(), task.start, "first point", "start");
+  check(points.back(), task.goal, "last point", "goal");
+  return warnings;
+}
+
 PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory) {
   PathFile path;
   path.task = trajectory.task;
@@ -186,6 +200,7 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
                           {"states", std::move(states)},
                           {"waypoint_states", timeline.waypointStates},
                           {"timing", std::move(timing)}};
+  document["warnings"] = pathEndWarnings(task, waypoints);
   document["synergies"] = synergies ? synergiesJson(*synergies, slots, timeline, parameters.plannerDirections) : Json();
   return data;
 }

@@ -12,6 +12,8 @@ import { createSynergyReadout } from './synergy_readout.js';
 import { createSynergyExplorer } from './synergy_explorer.js';
 import { createPathPlayer } from './path_player.js';
 import { createJointPlots } from './joint_plots.js';
+import { ghostSpacing } from './ghost_spacing.js';
+import { showPathWarnings } from './path_warnings.js';
 
 const api = { ready: false, error: null };
 window.pmdplanViewer = api;
@@ -74,6 +76,7 @@ function describe(data, notes) {
 
 function start(data) {
   checkData(data);
+  showPathWarnings(data.warnings);
   const notes = [];
   const view = createSceneView(byId('view'));
   const obstacles = addObstacles(view.scene, data.task, notes, () => {
@@ -122,7 +125,10 @@ function start(data) {
   ghostEvery.value = String(Math.max(1, Math.round((states.length - 1) / GHOSTS_BY_DEFAULT)));
   let ghostCount = 0;
   const rebuildGhosts = () => {
-    ghostCount = ghosts.rebuild(states, Number(ghostEvery.value) || 1, ghostMode.value, states[player.state]);
+    const spacing = ghostSpacing(ghostEvery.value, states.length);
+    ghostEvery.value = String(spacing.every);
+    byId('ghost-note').textContent = spacing.note;
+    ghostCount = ghosts.rebuild(states, spacing.every, ghostMode.value, states[player.state]);
     pose(player.state);
     view.requestRender();
   };
@@ -161,6 +167,7 @@ function start(data) {
     stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),
     peakVelocityFraction: () => (plots ? plots.peakVelocityFraction() : null),
     notes,
+    warnings: (data.warnings || []).slice(),
     setState: (index) => player.go(index),
     jointValue: (name) => robot.jointValue(name),
     synergyReadout: () => (readout ? readout.current(player.state) : null),

@@ -202,6 +202,17 @@ async function main() {
     assert.equal(await viewerValue(page, () => window.pmdplanViewer.playing), false, 'pause stops the animation');
     log(`play reached state ${await viewerValue(page, () => window.pmdplanViewer.state)}`);
     assert.ok((await viewerValue(page, () => window.pmdplanViewer.ghostCount)) >= 2, 'a ghost trail is drawn');
+    // "every 0" is refused: the field gets a usable spacing back, a note says why, and the trail
+    // stays at most 40 ghosts (plus the last state).
+    await page.locator('#ghost-every').fill('0');
+    await page.locator('#ghost-every').dispatchEvent('change');
+    const refused = await viewerValue(page, () => ({ value: document.getElementById('ghost-every').value,
+      note: document.getElementById('ghost-note').textContent, ghosts: window.pmdplanViewer.ghostCount }));
+    assert.ok(Number(refused.value) >= 1, `every 0 was kept: ${refused.value}`);
+    assert.ok(refused.note.includes('refused'), `no note for every 0: ${refused.note}`);
+    assert.ok(refused.ghosts <= 41, `every 0 drew ${refused.ghosts} ghosts`);
+    await page.locator('#ghost-note').screenshot({ path: join(o.work, 'viewer-ghosts-refused.png') });
+    log(`every 0 refused: every ${refused.value}, ${refused.ghosts} ghosts ("${refused.note}")`);
 
     // The screenshot a person would see, in the middle of the motion.
     frames = await renderCount(page);

@@ -13,6 +13,7 @@
 //              waypoint_states: [state index of each waypoint],
 //              timing: null, or for a timed trajectory {duration, blend_tolerance, velocity_limits,
 //                      acceleration_limits, times: [s per state], velocities: [[rad/s ...]]}}
+//   warnings  ["the path's first point is not task T's start ...", ...]: shown on the page
 //   synergies {provenance, joint_names, lower, upper, own_axis_joints, orthonormal, mean,
 //              directions: [[...]], sigma, variance_fraction (normalised units), planner_directions,
 //              readout: {own_axis, coefficients, distance_from_subspace}: one row per state}
@@ -47,6 +48,12 @@ struct ViewerDataParameters {
   /// path given to viewerData() is trajectoryAsPathFile() of it. Null for a path file.
   const TrajectoryFile* trajectory = nullptr;
 };
+
+/// A path's ends farther than this (rad, any joint) from the task's start and goal are not its ends.
+constexpr double kEndTolerance = 1e-6;
+
+/// Warnings for a path (in the robot's configuration order) whose ends are not the task's.
+std::vector<std::string> pathEndWarnings(const Task& task, const std::vector<Configuration>& points);
 
 /// The trajectory's positions as a path file's points (for viewerData with `trajectory` set).
 PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory);
