@@ -95,15 +95,7 @@ bool isTrajectoryFileText(const std::string& text) {
 
 TrajectoryFile parseTrajectoryFile(const std::string& text, const std::string& file) {
   using namespace json_reading;
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
-    throw InputError(file, "", std::string("not valid JSON (") + error.what() + ")");
-  } catch (const nlohmann::json::out_of_range& error) {
-    // A number no double holds (1e999): the parser stops at it.
-    throw InputError(file, "", std::string("a number is out of range; expected finite numbers (") + error.what() + ")");
-  }
+  const nlohmann::json document = parseDocument(text, file);
   const Place root{file, ""};
   requireObject(document, root);
   checkKeys(document, root,
