@@ -14,6 +14,7 @@ import { createPathPlayer } from './path_player.js';
 import { createJointPlots } from './joint_plots.js';
 import { ghostSpacing } from './ghost_spacing.js';
 import { showPathWarnings } from './path_warnings.js';
+import { createStartGoalMarkers } from './start_goal_markers.js';
 
 const api = { ready: false, error: null };
 window.pmdplanViewer = api;
@@ -147,7 +148,20 @@ function start(data) {
     frameBox(view, new THREE.Box3().setFromCenterAndSize(palm, new THREE.Vector3(0.35, 0.35, 0.35)), direction);
   });
 
+  const ends = createStartGoalMarkers(view.scene, robot);
+  const endsToggle = byId('show-ends');
+  let endCopies = 0;
+  const rebuildEnds = () => {
+    endCopies = ends.rebuild(states, ghostMode.value === 'hand', states[player.state]);
+    ends.setVisible(endsToggle.checked);
+    pose(player.state);
+    view.requestRender();
+  };
+  endsToggle.addEventListener('change', rebuildEnds);
+  ghostMode.addEventListener('change', rebuildEnds);
+
   rebuildGhosts();
+  rebuildEnds();
   player.go(0);
   if (explorer) explorer.refresh();
   frameBox(view, box, SCENE_VIEW_DIRECTION);
@@ -162,6 +176,7 @@ function start(data) {
     get playing() { return player.playing; },
     get renderCount() { return view.renderCount; },
     get ghostCount() { return ghostCount; },
+    get endsShown() { return endsToggle.checked ? endCopies : 0; },
     timed: Boolean(data.path.timing),
     duration: data.path.timing ? data.path.timing.duration : null,
     stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),
