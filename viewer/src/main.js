@@ -15,6 +15,8 @@ import { createJointPlots } from './joint_plots.js';
 import { ghostSpacing } from './ghost_spacing.js';
 import { showPathWarnings } from './path_warnings.js';
 import { createStartGoalMarkers } from './start_goal_markers.js';
+import { createPalmTrace } from './palm_trace.js';
+import { stateFromUrl, writeStateToUrl } from './url_state.js';
 
 const api = { ready: false, error: null };
 window.pmdplanViewer = api;
@@ -78,6 +80,7 @@ function describe(data, notes) {
 function start(data) {
   checkData(data);
   showPathWarnings(data.warnings);
+  const initialState = stateFromUrl(data.path.states.length) ?? 0;  // before anything poses (and rewrites it)
   const notes = [];
   const view = createSceneView(byId('view'));
   const obstacles = addObstacles(view.scene, data.task, notes, () => {
@@ -100,6 +103,7 @@ function start(data) {
     jointTable.update();
     if (readout) readout.show(state);
     if (plots) plots.show(state);
+    writeStateToUrl(state);
   }
   let explorer = null;
   if (data.synergies) {
@@ -160,9 +164,17 @@ function start(data) {
   endsToggle.addEventListener('change', rebuildEnds);
   ghostMode.addEventListener('change', rebuildEnds);
 
+  const trace = createPalmTrace(view.scene, robot);
+  const traceToggle = byId('show-palm-trace');
+  const tracePoints = trace.rebuild(states, states[0]);
+  traceToggle.addEventListener('change', () => {
+    trace.setVisible(traceToggle.checked);
+    view.requestRender();
+  });
+
   rebuildGhosts();
   rebuildEnds();
-  player.go(0);
+  player.go(initialState);
   if (explorer) explorer.refresh();
   frameBox(view, box, SCENE_VIEW_DIRECTION);
   describe(data, notes);
@@ -177,6 +189,7 @@ function start(data) {
     get renderCount() { return view.renderCount; },
     get ghostCount() { return ghostCount; },
     get endsShown() { return endsToggle.checked ? endCopies : 0; },
+    palmTracePoints: tracePoints,
     timed: Boolean(data.path.timing),
     duration: data.path.timing ? data.path.timing.duration : null,
     stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),

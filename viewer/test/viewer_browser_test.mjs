@@ -219,6 +219,29 @@ async function main() {
     log(`start / goal copies: ${(100 * endsChange).toFixed(2)} % of pixels; screenshot viewer-start-goal.png`);
     await page.locator('#show-ends').check();
     await page.locator('#ghost-mode').selectOption('hand');
+    // The palm trace: one point per state; hiding it changes the picture.
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.palmTracePoints), count, 'a palm trace point per state');
+    await page.locator('#ghost-mode').selectOption('off');
+    await page.locator('#show-ends').uncheck();
+    let traceFrames = await renderCount(page);
+    const withTrace = await canvasAfterRender(page, traceFrames);
+    writeFileSync(join(o.work, 'viewer-palm-trace.png'), withTrace.png);
+    traceFrames = await renderCount(page);
+    await page.locator('#show-palm-trace').uncheck();
+    const withoutTrace = await canvasAfterRender(page, traceFrames);
+    const traceChange = changedShare(withTrace.image, withoutTrace.image);
+    assert.ok(traceChange > 0.0002, `hiding the palm trace hardly changed the image (${(100 * traceChange).toFixed(3)} %)`);
+    log(`palm trace: ${(100 * traceChange).toFixed(2)} % of pixels; screenshot viewer-palm-trace.png`);
+    await page.locator('#show-palm-trace').check();
+    await page.locator('#show-ends').check();
+    await page.locator('#ghost-mode').selectOption('hand');
+    // The state is in the address: a reload opens the same state.
+    assert.ok((await viewerValue(page, () => window.location.hash)).startsWith('#state='), 'the state is in the URL');
+    const shownState = await viewerValue(page, () => window.pmdplanViewer.state);
+    await page.reload();
+    await page.waitForFunction(() => window.pmdplanViewer && window.pmdplanViewer.ready, null, { timeout: 60_000 });
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), shownState, 'a reload keeps the state from the URL');
+    log(`state ${shownState} kept in the URL across a reload`);
     // "every 0" is refused: the field gets a usable spacing back, a note says why, and the trail
     // stays at most 40 ghosts (plus the last state).
     await page.locator('#ghost-every').fill('0');
