@@ -16,6 +16,7 @@ import { ghostSpacing } from './ghost_spacing.js';
 import { showPathWarnings } from './path_warnings.js';
 import { createStartGoalMarkers } from './start_goal_markers.js';
 import { createPalmTrace } from './palm_trace.js';
+import { createObjectPanel } from './object_panel.js';
 import { stateFromUrl, writeStateToUrl } from './url_state.js';
 
 const api = { ready: false, error: null };
@@ -87,6 +88,7 @@ function start(data) {
     describe(data, notes);
     view.requestRender();
   });
+  const objectNames = createObjectPanel(obstacles, data.task, view);
   const robot = createRobot(view.scene, data.robot, data.task.base, notes);
   const jointTable = createJointTable(byId('joint-table'), data.robot, robot);
   const ghosts = createGhostTrail(view.scene, robot);
@@ -190,6 +192,7 @@ function start(data) {
     get ghostCount() { return ghostCount; },
     get endsShown() { return endsToggle.checked ? endCopies : 0; },
     palmTracePoints: tracePoints,
+    objectNames,
     timed: Boolean(data.path.timing),
     duration: data.path.timing ? data.path.timing.duration : null,
     stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),

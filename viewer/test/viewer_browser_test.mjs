@@ -235,6 +235,21 @@ async function main() {
     await page.locator('#show-palm-trace').check();
     await page.locator('#show-ends').check();
     await page.locator('#ghost-mode').selectOption('hand');
+    // Objects by name: hiding the target and making the table transparent change the picture.
+    const objects = await viewerValue(page, () => window.pmdplanViewer.objectNames);
+    assert.ok(objects.includes('table') && objects.includes('goal_can'), `objects listed: ${objects}`);
+    assert.ok((await page.locator('#object-table').innerText()).includes('goal_can (target)'), 'the target is named in the legend');
+    const allShown = { image: decodePng(await page.locator('#view canvas').screenshot()) };
+    const objectFrames = await renderCount(page);
+    await page.locator('tr[data-object="goal_can"] input[type=checkbox]').uncheck();
+    await page.locator('tr[data-object="table"] input[type=range]').fill('0.3');
+    const changedObjects = await canvasAfterRender(page, objectFrames);
+    const objectChange = changedShare(allShown.image, changedObjects.image);
+    assert.ok(objectChange > 0.01, `hiding the can and a transparent table hardly changed the image (${(100 * objectChange).toFixed(3)} %)`);
+    await page.screenshot({ path: join(o.work, 'viewer-objects.png') });
+    log(`objects ${objects.join(', ')}: can hidden, table at 30 % opacity, ${(100 * objectChange).toFixed(2)} % of pixels; screenshot viewer-objects.png`);
+    await page.locator('tr[data-object="goal_can"] input[type=checkbox]').check();
+    await page.locator('tr[data-object="table"] input[type=range]').fill('1');
     // The state is in the address: a reload opens the same state.
     assert.ok((await viewerValue(page, () => window.location.hash)).startsWith('#state='), 'the state is in the URL');
     const shownState = await viewerValue(page, () => window.pmdplanViewer.state);
