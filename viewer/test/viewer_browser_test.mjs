@@ -75,6 +75,20 @@ async function canvasAfterRender(page, before) {
   return { png, image: decodePng(png) };
 }
 
+/// The share of the canvas that changes when `hide` runs, after `prepare` (which must cause a
+/// frame, unless `prepared` says it is already shown); the shot before hiding goes to `file`.
+async function hidingChange(page, file, prepare, hide, prepared = false) {
+  let frames = await renderCount(page);
+  await prepare();
+  const shown = prepared ? { png: await page.locator('#view canvas').screenshot() } : await canvasAfterRender(page, frames);
+  if (prepared) shown.image = decodePng(shown.png);
+  writeFileSync(file, shown.png);
+  frames = await renderCount(page);
+  await hide();
+  const hidden = await canvasAfterRender(page, frames);
+  return changedShare(shown.image, hidden.image);
+}
+
 const renderCount = (page) => page.evaluate(() => window.pmdplanViewer.renderCount);
 const viewerValue = (page, fn, argument) => page.evaluate(fn, argument);
 
@@ -207,29 +221,15 @@ async function main() {
     assert.ok((await viewerValue(page, () => window.pmdplanViewer.ghostCount)) >= 2, 'a ghost trail is drawn');
     // Start (green) and goal (red) are drawn apart; switching them off changes the picture.
     assert.ok((await viewerValue(page, () => window.pmdplanViewer.endsShown)) >= 2, 'start and goal copies are drawn');
-    await page.locator('#ghost-mode').selectOption('off');
-    let endsFrames = await renderCount(page);
-    const withEnds = await canvasAfterRender(page, endsFrames);
-    writeFileSync(join(o.work, 'viewer-start-goal.png'), withEnds.png);
-    endsFrames = await renderCount(page);
-    await page.locator('#show-ends').uncheck();
-    const withoutEnds = await canvasAfterRender(page, endsFrames);
-    const endsChange = changedShare(withEnds.image, withoutEnds.image);
+    const ghostsOff = () => page.locator('#ghost-mode').selectOption('off');
+    const endsChange = await hidingChange(page, join(o.work, 'viewer-start-goal.png'), ghostsOff,
+      () => page.locator('#show-ends').uncheck());
     assert.ok(endsChange > 0.002, `hiding start and goal hardly changed the image (${(100 * endsChange).toFixed(3)} %)`);
     log(`start / goal copies: ${(100 * endsChange).toFixed(2)} % of pixels; screenshot viewer-start-goal.png`);
-    await page.locator('#show-ends').check();
-    await page.locator('#ghost-mode').selectOption('hand');
     // The palm trace: one point per state; hiding it changes the picture.
     assert.equal(await viewerValue(page, () => window.pmdplanViewer.palmTracePoints), count, 'a palm trace point per state');
-    await page.locator('#ghost-mode').selectOption('off');
-    await page.locator('#show-ends').uncheck();
-    let traceFrames = await renderCount(page);
-    const withTrace = await canvasAfterRender(page, traceFrames);
-    writeFileSync(join(o.work, 'viewer-palm-trace.png'), withTrace.png);
-    traceFrames = await renderCount(page);
-    await page.locator('#show-palm-trace').uncheck();
-    const withoutTrace = await canvasAfterRender(page, traceFrames);
-    const traceChange = changedShare(withTrace.image, withoutTrace.image);
+    const traceChange = await hidingChange(page, join(o.work, 'viewer-palm-trace.png'), ghostsOff,
+      () => page.locator('#show-palm-trace').uncheck(), true);
     assert.ok(traceChange > 0.0002, `hiding the palm trace hardly changed the image (${(100 * traceChange).toFixed(3)} %)`);
     log(`palm trace: ${(100 * traceChange).toFixed(2)} % of pixels; screenshot viewer-palm-trace.png`);
     await page.locator('#show-palm-trace').check();
