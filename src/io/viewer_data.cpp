@@ -8,6 +8,7 @@
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_robot_match.hpp"
 #include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/state_clearance.hpp"
 #include "pmdplan/io/statistics_json.hpp"
 #include "pmdplan/io/synergy_readout.hpp"
 
@@ -201,6 +202,13 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
                           {"waypoint_states", timeline.waypointStates},
                           {"timing", std::move(timing)}};
   document["warnings"] = pathEndWarnings(task, waypoints);
+  Json clearance = Json::array(), colliding = Json::array();
+  for (const StateClearance& state : stateClearances(task, timeline.states)) {
+    clearance.push_back(state.clearance);
+    colliding.push_back(state.collidingLinks);
+  }
+  document["path"]["clearance"] = std::move(clearance);
+  document["path"]["colliding_links"] = std::move(colliding);
   document["synergies"] = synergies ? synergiesJson(*synergies, slots, timeline, parameters.plannerDirections) : Json();
   return data;
 }

@@ -60,6 +60,26 @@ TEST(ViewInputCli, EndsThatAreNotTheTasksGiveAWarningOnThePage) {
   EXPECT_THAT(warnings[0].get<std::string>(), HasSubstr("last point is not task can_on_table's goal"));
 }
 
+TEST(ViewInputCli, EveryStateHasItsClearanceAndItsCollidingLinks) {
+  // The straight segment from can_on_table's start to its goal passes through the can.
+  test::TempDir dir;
+  const auto file = dir.path() / "straight.json";
+  writePathFile(file, endsOnly(loadTaskByName("can_on_table")));
+  ASSERT_EQ(runCli("view " + quoted(file) + " --out " + quoted(dir.path() / "v")).exitCode, 0);
+  const auto path = viewerDocument(dir.path() / "v")["path"];
+  ASSERT_EQ(path["clearance"].size(), path["states"].size());
+  ASSERT_EQ(path["colliding_links"].size(), path["states"].size());
+  EXPECT_GT(path["clearance"].front().get<double>(), 0.0);
+  EXPECT_TRUE(path["colliding_links"].front().empty());
+  std::size_t colliding = 0;
+  for (std::size_t i = 0; i < path["states"].size(); ++i) {
+    if (path["colliding_links"][i].empty()) continue;
+    ++colliding;
+    EXPECT_LE(path["clearance"][i].get<double>(), 1e-9) << "state " << i << " collides but has clearance";
+  }
+  EXPECT_GT(colliding, 0u);
+}
+
 TEST(ViewInputCli, AnOverflowingNumberIsBadInput) {
   test::TempDir dir;
   const auto file = dir.path() / "big.json";

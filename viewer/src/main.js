@@ -17,6 +17,7 @@ import { showPathWarnings } from './path_warnings.js';
 import { createStartGoalMarkers } from './start_goal_markers.js';
 import { createPalmTrace } from './palm_trace.js';
 import { createObjectPanel } from './object_panel.js';
+import { createCollisionHighlight } from './collision_highlight.js';
 import { stateFromUrl, writeStateToUrl } from './url_state.js';
 
 const api = { ready: false, error: null };
@@ -94,6 +95,7 @@ function start(data) {
   const ghosts = createGhostTrail(view.scene, robot);
   const states = data.path.states;
   const plots = createJointPlots(data.path, data.robot);
+  const highlight = createCollisionHighlight(robot.object, data.path);
 
   let explorerPosture = null;
   let player = null;
@@ -105,6 +107,7 @@ function start(data) {
     jointTable.update();
     if (readout) readout.show(state);
     if (plots) plots.show(state);
+    highlight.show(state);
     writeStateToUrl(state);
   }
   let explorer = null;
@@ -193,6 +196,8 @@ function start(data) {
     get endsShown() { return endsToggle.checked ? endCopies : 0; },
     palmTracePoints: tracePoints,
     objectNames,
+    collidingMeshes: () => highlight.collidingMeshes(),
+    clearanceText: () => document.getElementById('clearance-label').textContent,
     timed: Boolean(data.path.timing),
     duration: data.path.timing ? data.path.timing.duration : null,
     stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),

@@ -8,7 +8,7 @@
 //   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR [--trajectory T.json]
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { launchChromium } from './chromium.mjs';
@@ -91,6 +91,36 @@ async function hidingChange(page, file, prepare, hide, prepared = false) {
 
 const renderCount = (page) => page.evaluate(() => window.pmdplanViewer.renderCount);
 const viewerValue = (page, fn, argument) => page.evaluate(fn, argument);
+
+/// The straight segment from the path's start to its goal passes through the can: along it the
+/// page draws the colliding links red and says so; the planned path shows its clearance instead.
+async function checkCollisions(browser, o) {
+  const path = JSON.parse(readFileSync(o.path, 'utf8'));
+  path.points = [path.points[0], path.points[path.points.length - 1]];
+  const straight = join(o.work, 'straight.path.json');
+  writeFileSync(straight, JSON.stringify(path));
+  const { server, url } = await serveViewer(o.cli, straight, resolve(o.work, 'straight-viewer'));
+  try {
+    const { page, problems } = await openViewer(browser, url);
+    const clearance = await viewerValue(page, () => window.pmdplanViewer.clearanceText());
+    assert.ok(clearance.startsWith('clearance '), `the start state shows its clearance: ${clearance}`);
+    const count = await viewerValue(page, () => window.pmdplanViewer.stateCount);
+    let hit = -1;
+    for (let state = 0; state < count && hit < 0; ++state) {
+      await viewerValue(page, (i) => window.pmdplanViewer.setState(i), state);
+      if ((await viewerValue(page, () => window.pmdplanViewer.collidingMeshes())) > 0) hit = state;
+    }
+    assert.ok(hit >= 0, 'no state of the straight segment through the can is drawn in collision');
+    const text = await viewerValue(page, () => window.pmdplanViewer.clearanceText());
+    assert.ok(text.startsWith('in collision: '), `the label says so: ${text}`);
+    await page.screenshot({ path: join(o.work, 'viewer-collision.png') });
+    log(`straight segment: state ${hit} of ${count} drawn in collision (${text}); screenshot viewer-collision.png`);
+    assert.deepEqual(problems, [], `the collision page reported problems:\n${problems.join('\n')}`);
+    await page.close();
+  } finally {
+    server.kill('SIGTERM');
+  }
+}
 
 /// A timed trajectory: the clock in the label, plots drawn, playback in real time (the trajectory's
 /// time advances with the wall clock at 1×), velocities within the limits.
@@ -282,6 +312,7 @@ async function main() {
     const fromDisk = await openViewer(browser, pathToFileURL(join(folder, 'index.html')).href);
     assert.deepEqual(fromDisk.problems, [], `from file://:\n${fromDisk.problems.join('\n')}`);
     log('viewer ready from file://');
+    await checkCollisions(browser, o);
     if (o.trajectory) await checkTrajectory(browser, o);
   } finally {
     await browser.close();
