@@ -201,12 +201,19 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
                           {"states", std::move(states)},
                           {"waypoint_states", timeline.waypointStates},
                           {"timing", std::move(timing)}};
-  document["warnings"] = pathEndWarnings(task, waypoints);
+  std::vector<std::string> warnings = pathEndWarnings(task, waypoints);
   Json clearance = Json::array(), colliding = Json::array();
-  for (const StateClearance& state : stateClearances(task, timeline.states)) {
-    clearance.push_back(state.clearance);
-    colliding.push_back(state.collidingLinks);
+  try {
+    for (const StateClearance& state : stateClearances(task, timeline.states)) {
+      clearance.push_back(state.clearance);
+      colliding.push_back(state.collidingLinks);
+    }
+  } catch (const InputError& error) {
+    // Geometry the checker cannot load (an empty mesh, ...): the page still shows the path.
+    clearance = colliding = Json();
+    warnings.push_back("no collisions or clearance shown: " + error.file() + ": " + error.message());
   }
+  document["warnings"] = std::move(warnings);
   document["path"]["clearance"] = std::move(clearance);
   document["path"]["colliding_links"] = std::move(colliding);
   document["synergies"] = synergies ? synergiesJson(*synergies, slots, timeline, parameters.plannerDirections) : Json();

@@ -12,7 +12,8 @@
 //   path      {planner, seed, statistics, waypoint_count, state_spacing, states: [[rad ...]],
 //              waypoint_states: [state index of each waypoint],
 //              clearance: [m per state: the moving links' distance to the obstacles],
-//              colliding_links: [[link names] per state: the exact checker's colliding pairs],
+//              colliding_links: [[link names] per state: the exact checker's colliding pairs]
+//              (both null, with a warning, when the checker cannot load the task's geometry),
 //              timing: null, or for a timed trajectory {duration, blend_tolerance, velocity_limits,
 //                      acceleration_limits, times: [s per state], velocities: [[rad/s ...]]}}
 //   warnings  ["the path's first point is not task T's start ...", ...]: shown on the page
