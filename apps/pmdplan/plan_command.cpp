@@ -20,6 +20,7 @@
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
+#include "trajectory_output.hpp"
 
 namespace pmdplan::cli {
 namespace {
@@ -36,6 +37,7 @@ struct Options {
   std::string output;
   std::string csv;
   bool json = false;
+  std::optional<std::string> trajectory;  ///< --trajectory [F.json]: also time the path
 };
 
 int run(const Options& o) {
@@ -85,11 +87,14 @@ int run(const Options& o) {
   const auto& stats = result.statistics;
 
   const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
+  std::string trajectorySummary;
   if (stats.solved()) {
     PathFile file{task.name, o.planner, parameters.seed, task.robot->activeJointNames(), result.path, result.closingFrom,
                   mimicRelations(*task.robot), stats};
     writePathFile(output, file);
     if (!o.csv.empty()) writePathCsv(o.csv, file.jointNames, file.points);
+    if (o.trajectory)
+      trajectorySummary = writeTimedTrajectory(task, checking, file, {}, o.trajectory->empty() ? defaultTrajectoryFile(output) : std::filesystem::path(*o.trajectory));
   }
   if (o.json) {
     auto document = statisticsToJson(stats, true);
@@ -104,7 +109,7 @@ int run(const Options& o) {
       std::printf("  grasp of %s: approach to a pre-grasp (%s, %.1f mm from it), then closing (points %zu-%zu)\n",
                   task.target->c_str(), result.grasp->derived ? "the goal hand opened" : "the task's pregrasp",
                   1000.0 * result.grasp->clearance, *result.closingFrom, result.path.size() - 1);
-    std::printf("  path written to %s\n", output.string().c_str());
+    std::printf("  path written to %s\n%s", output.string().c_str(), trajectorySummary.c_str());
   } else {
     std::printf("%s: not solved (%s) after %.1f s, %zu samples, %zu roadmap nodes\n", task.name.c_str(),
                 plannerStatusName(status).c_str(), stats.planningTime, stats.samples, stats.roadmapNodes);
@@ -126,6 +131,8 @@ const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD ro
   app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
   app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
   app.add_flag("--json", o->json, "Print the statistics as JSON");
+  app.add_option("--trajectory", o->trajectory, "Also write the time-optimal trajectory (default TASK.trajectory.json) and its CSV")
+      ->expected(0, 1);
   return [o] { return run(*o); };
 }};
 

@@ -8,8 +8,11 @@
 
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/path_robot_match.hpp"
+#include "pmdplan/io/trajectory_file.hpp"
 #include "pmdplan/io/static_file_server.hpp"
 #include "pmdplan/io/viewer_data.hpp"
 #include "pmdplan/io/viewer_folder.hpp"
@@ -44,15 +47,27 @@ Task loadPathTask(const Options& o, const PathFile& path) {
 }
 
 int run(const Options& o) {
-  const PathFile path = readPathFile(o.path);
+  const std::string text = readTextFile(o.path);
+  std::optional<TrajectoryFile> trajectory;
+  if (isTrajectoryFileText(text)) trajectory = parseTrajectoryFile(text, o.path);
+  const PathFile path = trajectory ? trajectoryAsPathFile(*trajectory) : parsePathFile(text, o.path);
   const Task task = loadPathTask(o, path);
+  if (!o.task.empty() && task.name != path.task) {
+    // Another task than the path's own: only if the path starts and ends where that task does.
+    const auto warnings = pathEndWarnings(task, pathConfigurations(path, *task.robot, o.path));
+    if (!warnings.empty())
+      throw InputError(o.path, "task", "the path was planned for task '" + path.task + "', not --task " + task.name + ": " +
+                                           warnings.front() + "; view it with its own task");
+  }
   std::filesystem::path synergyFile = o.synergies;
   if (synergyFile.empty() && std::filesystem::exists(defaultSynergyModelPath(task.robot->name())))
     synergyFile = defaultSynergyModelPath(task.robot->name());
   const std::optional<SynergyModel> synergies =
       synergyFile.empty() ? std::nullopt : std::optional<SynergyModel>(loadSynergyModel(synergyFile));
 
-  const ViewerData data = viewerData(task, path, synergies ? &*synergies : nullptr, {o.path, synergyFile});
+  ViewerDataParameters parameters;
+  parameters.trajectory = trajectory ? &*trajectory : nullptr;
+  const ViewerData data = viewerData(task, path, synergies ? &*synergies : nullptr, {o.path, synergyFile}, parameters);
   const std::filesystem::path out = o.out.empty() ? defaultOutput(o.path) : std::filesystem::path(o.out);
   writeViewerFolder(out, data, viewerAssetDirectory());
   std::cout << "wrote " << out.string() << "/ (" << data.document["path"]["states"].size() << " states from "
@@ -70,7 +85,7 @@ const CommandRegistrar registrar{
     [](CLI::App& app) {
       auto o = std::make_shared<Options>();
       addPackagePathOption(app);
-      app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan")->required();
+      app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan, or a trajectory file (plan --trajectory, time)")->required();
       app.add_option("--out", o->out, "Viewer folder to write (default: PATH's name with -viewer, beside it)");
       app.add_option("--serve", o->servePort, "Serve the folder on 127.0.0.1:PORT until stopped (0: any free port)");
       app.add_option("--task", o->task, "Task name or file (default: the task the path file names)");

@@ -61,6 +61,17 @@ std::uint64_t readUnsigned(const nlohmann::json& value, const Place& place) {
   return value.get<std::uint64_t>();
 }
 
+nlohmann::json parseDocument(const std::string& text, const std::string& file) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw InputError(file, "", std::string("not valid JSON (") + error.what() + ")");
+  } catch (const nlohmann::json::out_of_range& error) {
+    // A number no double holds (1e999): the parser stops at it.
+    throw InputError(file, "", std::string("a number is out of range; expected finite numbers (") + error.what() + ")");
+  }
+}
+
 double readFinite(const nlohmann::json& value, const Place& place) {
   if (!value.is_number()) place.fail("expected a number, found " + typeName(value));
   const double number = value.get<double>();

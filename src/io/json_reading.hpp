@@ -18,6 +18,9 @@ struct Place {
   [[noreturn]] void fail(const std::string& message) const;
 };
 
+/// The parsed document; InputError naming `file` for text that is not JSON or holds a number no
+/// double holds (1e999).
+nlohmann::json parseDocument(const std::string& text, const std::string& file);
 const nlohmann::json& requireObject(const nlohmann::json& value, const Place& place);
 const nlohmann::json& requireArray(const nlohmann::json& value, const Place& place);
 /// Every key of `object` must be in `allowed`, and every key of `required` present.

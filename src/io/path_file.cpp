@@ -77,12 +77,7 @@ std::size_t readPhases(const nlohmann::json& value, const json_reading::Place& p
 
 PathFile parsePathFile(const std::string& text, const std::string& file) {
   using namespace json_reading;
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
-    throw InputError(file, "", std::string("not valid JSON (") + error.what() + ")");
-  }
+  const nlohmann::json document = parseDocument(text, file);
   const Place root{file, ""};
   requireObject(document, root);
   checkKeys(document, root, {"task", "planner", "seed", "joint_names", "points", "phases", "mimic", "statistics"},

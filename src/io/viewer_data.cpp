@@ -1,11 +1,14 @@
 #include "pmdplan/io/viewer_data.hpp"
 
+#include <cmath>
 #include <algorithm>
 #include <type_traits>
 
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_robot_match.hpp"
 #include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/state_clearance.hpp"
 #include "pmdplan/io/statistics_json.hpp"
 #include "pmdplan/io/synergy_readout.hpp"
 
@@ -129,7 +132,56 @@ Json synergiesJson(const SynergyModel& model, const std::vector<int>& slots, con
                                {"distance_from_subspace", std::move(distance)}}}};
 }
 
+/// A trajectory's points are the states; its ends are the only waypoints it keeps.
+PathTimeline trajectoryTimeline(const TrajectoryFile& trajectory, const RobotModel& robot,
+                                const std::vector<Configuration>& positions, const std::string& file) {
+  if (trajectory.trajectory.jointNames != robot.activeJointNames())
+    throw InputError(file, "joint_names", "expected the robot's active joints in its configuration order");
+  PathTimeline timeline;
+  timeline.states = positions;
+  timeline.waypointStates = {0, static_cast<int>(positions.size()) - 1};
+  return timeline;
+}
+
+Json trajectoryTimingJson(const TrajectoryFile& trajectory) {
+  Json times = Json::array(), velocities = Json::array();
+  for (const TimedState& point : trajectory.trajectory.points) {
+    times.push_back(point.time);
+    velocities.push_back(numbers(point.velocity));
+  }
+  return Json{{"duration", trajectory.trajectory.points.back().time},
+              {"blend_tolerance", trajectory.blendTolerance},
+              {"velocity_limits", trajectory.velocityLimits},
+              {"acceleration_limits", trajectory.accelerationLimits},
+              {"times", std::move(times)},
+              {"velocities", std::move(velocities)}};
+}
+
 }  // namespace
+
+std::vector<std::string> pathEndWarnings(const Task& task, const std::vector<Configuration>& points) {
+  std::vector<std::string> warnings;
+  const auto check = [&](const Configuration& q, const Configuration& expected, const char* end, const char* what) {
+    const double off = (q - expected).cwiseAbs().maxCoeff();
+    if (off > kEndTolerance)
+      warnings.push_back(std::string("the path's ") + end + " is not task " + task.name + "'s " + what + " (a joint differs by " +
+                         std::to_string(off * 180.0 / M_PI) + " deg)");
+  };
+  check(points.front(), task.start, "first point", "start");
+  check(points.back(), task.goal, "last point", "goal");
+  return warnings;
+}
+
+PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory) {
+  PathFile path;
+  path.task = trajectory.task;
+  path.planner = trajectory.planner;
+  path.seed = trajectory.seed;
+  path.jointNames = trajectory.trajectory.jointNames;
+  path.mimic = trajectory.mimic;
+  for (const TimedState& point : trajectory.trajectory.points) path.points.push_back(point.position);
+  return path;
+}
 
 ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies, const ViewerSources& sources,
                       const ViewerDataParameters& parameters) {
@@ -137,7 +189,14 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
   const std::vector<Configuration> waypoints = pathConfigurations(path, robot, sources.pathFile.string());
   const std::vector<int> slots =
       synergies ? modelJointSlots(*synergies, robot, sources.synergyFile.string()) : std::vector<int>{};
-  const PathTimeline timeline = pathTimeline(waypoints, robot, parameters.timeline);
+  PathTimeline timeline;
+  Json timing;
+  if (parameters.trajectory) {
+    timeline = trajectoryTimeline(*parameters.trajectory, robot, waypoints, sources.pathFile.string());
+    timing = trajectoryTimingJson(*parameters.trajectory);
+  } else {
+    timeline = pathTimeline(waypoints, robot, parameters.timeline);
+  }
 
   ViewerData data;
   Json states = Json::array();
@@ -157,7 +216,23 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
                           {"waypoint_count", waypoints.size()},
                           {"state_spacing", parameters.timeline.stateSpacing},
                           {"states", std::move(states)},
-                          {"waypoint_states", timeline.waypointStates}};
+                          {"waypoint_states", timeline.waypointStates},
+                          {"timing", std::move(timing)}};
+  std::vector<std::string> warnings = pathEndWarnings(task, waypoints);
+  Json clearance = Json::array(), colliding = Json::array();
+  try {
+    for (const StateClearance& state : stateClearances(task, timeline.states)) {
+      clearance.push_back(state.clearance);
+      colliding.push_back(state.collidingLinks);
+    }
+  } catch (const InputError& error) {
+    // Geometry the checker cannot load (an empty mesh, ...): the page still shows the path.
+    clearance = colliding = Json();
+    warnings.push_back("no collisions or clearance shown: " + error.file() + ": " + error.message());
+  }
+  document["warnings"] = std::move(warnings);
+  document["path"]["clearance"] = std::move(clearance);
+  document["path"]["colliding_links"] = std::move(colliding);
   document["synergies"] = synergies ? synergiesJson(*synergies, slots, timeline, parameters.plannerDirections) : Json();
   return data;
 }

@@ -167,6 +167,7 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
           if (!joint->limits) throw InputError(file, field + ".limit", "revolute and prismatic joints need <limit lower upper>");
           j.lower = joint->limits->lower;
           j.upper = joint->limits->upper;
+          j.velocity = std::isfinite(joint->limits->velocity) && joint->limits->velocity > 0.0 ? joint->limits->velocity : 0.0;
           if (!std::isfinite(j.lower) || !std::isfinite(j.upper) || !(j.lower < j.upper))
             throw InputError(file, field + ".limit", "expected finite lower < upper, got " + std::to_string(j.lower) +
                                                          " .. " + std::to_string(j.upper));

@@ -221,12 +221,15 @@ TEST(ViewerBrowser, OpensThePathInChromiumAndTheSliderMovesTheHand) {
   std::filesystem::remove_all(work);
   std::filesystem::create_directories(work);
   const auto path = work / "can_on_table.path.json";
-  const auto planned = runCli("plan can_on_table --seed 1 -o " + quoted(path));
+  const auto trajectory = work / "can_on_table.trajectory.json";
+  const auto planned = runCli("plan can_on_table --seed 1 -o " + quoted(path) + " --trajectory " + quoted(trajectory));
   ASSERT_EQ(planned.exitCode, 0) << planned.out << planned.err;
   const int code = runNode(quoted(kSourceTree / "viewer" / "test" / "viewer_browser_test.mjs") + " --cli " +
-                           quoted(PMDPLAN_CLI_PATH) + " --path " + quoted(path) + " --work " + quoted(work));
+                           quoted(PMDPLAN_CLI_PATH) + " --path " + quoted(path) + " --work " + quoted(work) +
+                           " --trajectory " + quoted(trajectory));
   EXPECT_EQ(code, 0) << "see the output above";
   EXPECT_TRUE(std::filesystem::is_regular_file(work / "viewer.png"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(work / "viewer-trajectory.png"));
 }
 
 TEST(ViewerBrowser, TheCommittedBundleMatchesItsSources) {

@@ -37,6 +37,10 @@ TEST(ViewerData, AMeshObstacleTravelsWithTheFolderAndARobotWithoutModelHasNoSyne
   EXPECT_EQ(data.document["task"]["obstacles"].back()["quaternion"], nlohmann::ordered_json({0.0, 0.0, 0.0, 1.0}));
   EXPECT_TRUE(data.document["synergies"].is_null());
   EXPECT_TRUE(data.document["sources"]["synergy_file"].is_null());
+  // The checker cannot load a mesh without triangles: no clearance, and the page says why.
+  EXPECT_TRUE(data.document["path"]["clearance"].is_null());
+  ASSERT_EQ(data.document["warnings"].size(), 1u);
+  EXPECT_NE(data.document["warnings"][0].get<std::string>().find("no collisions or clearance shown"), std::string::npos);
 
   const auto assets = dir.path() / "assets";
   for (const auto& file : viewerAssetFiles()) dir.write("assets/" + file, file);

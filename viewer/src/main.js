@@ -11,6 +11,14 @@ import { createJointTable } from './joint_table.js';
 import { createSynergyReadout } from './synergy_readout.js';
 import { createSynergyExplorer } from './synergy_explorer.js';
 import { createPathPlayer } from './path_player.js';
+import { createJointPlots } from './joint_plots.js';
+import { ghostSpacing } from './ghost_spacing.js';
+import { showPathWarnings } from './path_warnings.js';
+import { createStartGoalMarkers } from './start_goal_markers.js';
+import { createPalmTrace } from './palm_trace.js';
+import { createObjectPanel } from './object_panel.js';
+import { createCollisionHighlight } from './collision_highlight.js';
+import { stateFromUrl, writeStateToUrl } from './url_state.js';
 
 const api = { ready: false, error: null };
 window.pmdplanViewer = api;
@@ -56,7 +64,10 @@ function describe(data, notes) {
   byId('title').textContent = data.title;
   const s = data.path.statistics;
   const statistics = s.status === 'not_run' ? '' : ` · ${s.path_nodes} path nodes, length ${s.path_length.toFixed(3)}`;
-  byId('subtitle').textContent = `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
+  const timing = data.path.timing;
+  byId('subtitle').textContent = timing
+    ? `timed trajectory: ${timing.duration.toFixed(3)} s, ${data.path.states.length} points, blend tolerance ${timing.blend_tolerance} rad`
+    : `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
   const lines = [
     `path: ${data.sources.path_file} (${data.path.planner}, seed ${data.path.seed})`,
     `task: ${data.task.name} (${data.sources.task_file})${data.task.description ? ' · ' + data.task.description : ''}`,
@@ -70,12 +81,15 @@ function describe(data, notes) {
 
 function start(data) {
   checkData(data);
+  showPathWarnings(data.warnings);
+  const initialState = stateFromUrl(data.path.states.length) ?? 0;  // before anything poses (and rewrites it)
   const notes = [];
   const view = createSceneView(byId('view'));
   const obstacles = addObstacles(view.scene, data.task, notes, () => {
     describe(data, notes);
     view.requestRender();
   });
+  const objectNames = createObjectPanel(obstacles, data.task, view);
   const robot = createRobot(view.scene, data.robot, data.task.base, notes, () => {
     describe(data, notes);
     view.requestRender();
@@ -84,6 +98,8 @@ function start(data) {
   const jointTable = createJointTable(byId('joint-table'), data.robot, robot);
   const ghosts = createGhostTrail(view.scene, robot);
   const states = data.path.states;
+  const plots = createJointPlots(data.path, data.robot);
+  const highlight = createCollisionHighlight(robot.object, data.path);
 
   let explorerPosture = null;
   let player = null;
@@ -94,6 +110,9 @@ function start(data) {
     robot.object.updateMatrixWorld(true);
     jointTable.update();
     if (readout) readout.show(state);
+    if (plots) plots.show(state);
+    highlight.show(state);
+    writeStateToUrl(state);
   }
   let explorer = null;
   if (data.synergies) {
@@ -120,7 +139,10 @@ function start(data) {
   ghostEvery.value = String(Math.max(1, Math.round((states.length - 1) / GHOSTS_BY_DEFAULT)));
   let ghostCount = 0;
   const rebuildGhosts = () => {
-    ghostCount = ghosts.rebuild(states, Number(ghostEvery.value) || 1, ghostMode.value, states[player.state]);
+    const spacing = ghostSpacing(ghostEvery.value, states.length);
+    ghostEvery.value = String(spacing.every);
+    byId('ghost-note').textContent = spacing.note;
+    ghostCount = ghosts.rebuild(states, spacing.every, ghostMode.value, states[player.state]);
     pose(player.state);
     view.requestRender();
   };
@@ -139,8 +161,29 @@ function start(data) {
     frameBox(view, new THREE.Box3().setFromCenterAndSize(palm, new THREE.Vector3(0.35, 0.35, 0.35)), direction);
   });
 
+  const ends = createStartGoalMarkers(view.scene, robot);
+  const endsToggle = byId('show-ends');
+  let endCopies = 0;
+  const rebuildEnds = () => {
+    endCopies = ends.rebuild(states, ghostMode.value === 'hand', states[player.state]);
+    ends.setVisible(endsToggle.checked);
+    pose(player.state);
+    view.requestRender();
+  };
+  endsToggle.addEventListener('change', rebuildEnds);
+  ghostMode.addEventListener('change', rebuildEnds);
+
+  const trace = createPalmTrace(view.scene, robot);
+  const traceToggle = byId('show-palm-trace');
+  const tracePoints = trace.rebuild(states, states[0]);
+  traceToggle.addEventListener('change', () => {
+    trace.setVisible(traceToggle.checked);
+    view.requestRender();
+  });
+
   rebuildGhosts();
-  player.go(0);
+  rebuildEnds();
+  player.go(initialState);
   if (explorer) explorer.refresh();
   frameBox(view, box, SCENE_VIEW_DIRECTION);
   describe(data, notes);
@@ -154,7 +197,17 @@ function start(data) {
     get playing() { return player.playing; },
     get renderCount() { return view.renderCount; },
     get ghostCount() { return ghostCount; },
+    get endsShown() { return endsToggle.checked ? endCopies : 0; },
+    palmTracePoints: tracePoints,
+    objectNames,
+    collidingMeshes: () => highlight.collidingMeshes(),
+    clearanceText: () => document.getElementById('clearance-label').textContent,
+    timed: Boolean(data.path.timing),
+    duration: data.path.timing ? data.path.timing.duration : null,
+    stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),
+    peakVelocityFraction: () => (plots ? plots.peakVelocityFraction() : null),
     notes,
+    warnings: (data.warnings || []).slice(),
     setState: (index) => player.go(index),
     jointValue: (name) => robot.jointValue(name),
     synergyReadout: () => (readout ? readout.current(player.state) : null),

@@ -1,5 +1,7 @@
 // The path as an animation: a slider over the states (waypoints marked), play / pause, speed,
 // loop, and keys: arrows step one state, shift + arrows one waypoint, space plays, Home / End.
+// A timed trajectory (path.timing) plays in real time: at 1× each state shows at its
+// time_from_start; a path without times plays at a fixed number of states a second.
 import { byId, element } from './dom.js';
 
 const STATES_PER_SECOND = 30;
@@ -19,8 +21,22 @@ export function createPathPlayer(path, view, onState) {
 
   let state = 0;
   let playing = false;
-  let position = 0;      // fractional state while playing
+  let position = 0;      // fractional state while playing (untimed) or seconds (timed)
   let lastTime = null;
+  const times = path.timing ? path.timing.times : null;
+  const duration = times ? times[count - 1] : count - 1;
+  /// The last state at or before `t` seconds.
+  function stateAtTime(t) {
+    let low = 0, high = count - 1;
+    while (low < high) {
+      const middle = Math.ceil((low + high) / 2);
+      if (times[middle] <= t) low = middle;
+      else high = middle - 1;
+    }
+    return low;
+  }
+  const positionOf = (index) => (times ? times[index] : index);
+  const stateOf = (value) => (times ? stateAtTime(value) : Math.round(value));
 
   function waypointText(index) {
     const at = waypoints.indexOf(index);
@@ -31,7 +47,8 @@ export function createPathPlayer(path, view, onState) {
   function go(index) {
     state = Math.max(0, Math.min(count - 1, Math.round(index)));
     slider.value = String(state);
-    label.textContent = `state ${state + 1} of ${count} · ${waypointText(state)}`;
+    const clock = times ? `t = ${times[state].toFixed(2)} s of ${duration.toFixed(2)} s · ` : '';
+    label.textContent = `${clock}state ${state + 1} of ${count} · ${waypointText(state)}`;
     onState(state);
     view.requestRender();
   }
@@ -40,7 +57,7 @@ export function createPathPlayer(path, view, onState) {
     playButton.textContent = on ? 'Pause' : 'Play';
     if (on) {
       if (state >= count - 1) go(0);
-      position = state;
+      position = positionOf(state);
       lastTime = null;
       view.requestRender();
     }
@@ -48,17 +65,16 @@ export function createPathPlayer(path, view, onState) {
   view.onBeforeRender((time) => {
     if (!playing) return false;
     if (lastTime !== null) {
-      position += (time - lastTime) / 1000 * STATES_PER_SECOND * Number(speed.value);
-      if (position >= count - 1) {
-        if (loop.checked) position %= count - 1;
+      position += (time - lastTime) / 1000 * (times ? 1 : STATES_PER_SECOND) * Number(speed.value);
+      if (position >= duration) {
+        if (loop.checked) position %= duration;
         else {
-          position = count - 1;
-          go(position);
+          go(count - 1);
           setPlaying(false);
           return false;
         }
       }
-      if (Math.round(position) !== state) go(position);
+      if (stateOf(position) !== state) go(stateOf(position));
     }
     lastTime = time;
     return true;
@@ -99,6 +115,7 @@ export function createPathPlayer(path, view, onState) {
     go,
     get state() { return state; },
     get playing() { return playing; },
+    get timed() { return times !== null; },
     setPlaying,
   };
 }

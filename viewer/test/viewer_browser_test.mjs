@@ -2,12 +2,13 @@
 // SwiftShader WebGL) opens it, waits until it reports ready, and checks what a person would see:
 // the canvas is not blank, moving the slider changes a finger joint and the image, the coupled
 // distal joint follows, keys step, the synergy readout and explorer work, play advances. The
-// page also has to work opened straight from the disk (file://). Screenshots go to --work.
+// page also has to work opened straight from the disk (file://). With --trajectory, the timed
+// trajectory of the same path plays in real time with its joint plots. Screenshots go to --work.
 //
-//   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR
+//   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR [--trajectory T.json]
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { launchChromium } from './chromium.mjs';
@@ -23,7 +24,7 @@ function options() {
     const i = args.indexOf(name);
     return i >= 0 ? args[i + 1] : undefined;
   };
-  const o = { cli: value('--cli'), path: value('--path'), work: value('--work') };
+  const o = { cli: value('--cli'), path: value('--path'), work: value('--work'), trajectory: value('--trajectory') };
   if (!o.cli || !o.path || !o.work) {
     console.error('usage: viewer_browser_test.mjs --cli PMDPLAN --path PATH.json --work DIR');
     process.exit(2);
@@ -74,8 +75,96 @@ async function canvasAfterRender(page, before) {
   return { png, image: decodePng(png) };
 }
 
+/// The share of the canvas that changes when `hide` runs, after `prepare` (which must cause a
+/// frame, unless `prepared` says it is already shown); the shot before hiding goes to `file`.
+async function hidingChange(page, file, prepare, hide, prepared = false) {
+  let frames = await renderCount(page);
+  await prepare();
+  const shown = prepared ? { png: await page.locator('#view canvas').screenshot() } : await canvasAfterRender(page, frames);
+  if (prepared) shown.image = decodePng(shown.png);
+  writeFileSync(file, shown.png);
+  frames = await renderCount(page);
+  await hide();
+  const hidden = await canvasAfterRender(page, frames);
+  return changedShare(shown.image, hidden.image);
+}
+
 const renderCount = (page) => page.evaluate(() => window.pmdplanViewer.renderCount);
 const viewerValue = (page, fn, argument) => page.evaluate(fn, argument);
+
+/// The straight segment from the path's start to its goal passes through the can: along it the
+/// page draws the colliding links red and says so; the planned path shows its clearance instead.
+async function checkCollisions(browser, o) {
+  const path = JSON.parse(readFileSync(o.path, 'utf8'));
+  path.points = [path.points[0], path.points[path.points.length - 1]];
+  const straight = join(o.work, 'straight.path.json');
+  writeFileSync(straight, JSON.stringify(path));
+  const { server, url } = await serveViewer(o.cli, straight, resolve(o.work, 'straight-viewer'));
+  try {
+    const { page, problems } = await openViewer(browser, url);
+    const clearance = await viewerValue(page, () => window.pmdplanViewer.clearanceText());
+    assert.ok(clearance.startsWith('clearance '), `the start state shows its clearance: ${clearance}`);
+    const count = await viewerValue(page, () => window.pmdplanViewer.stateCount);
+    let hit = -1;
+    for (let state = 0; state < count && hit < 0; ++state) {
+      await viewerValue(page, (i) => window.pmdplanViewer.setState(i), state);
+      if ((await viewerValue(page, () => window.pmdplanViewer.collidingMeshes())) > 0) hit = state;
+    }
+    assert.ok(hit >= 0, 'no state of the straight segment through the can is drawn in collision');
+    const text = await viewerValue(page, () => window.pmdplanViewer.clearanceText());
+    assert.ok(text.startsWith('in collision: '), `the label says so: ${text}`);
+    await page.screenshot({ path: join(o.work, 'viewer-collision.png') });
+    log(`straight segment: state ${hit} of ${count} drawn in collision (${text}); screenshot viewer-collision.png`);
+    assert.deepEqual(problems, [], `the collision page reported problems:\n${problems.join('\n')}`);
+    await page.close();
+  } finally {
+    server.kill('SIGTERM');
+  }
+}
+
+/// A timed trajectory: the clock in the label, plots drawn, playback in real time (the trajectory's
+/// time advances with the wall clock at 1×), velocities within the limits.
+async function checkTrajectory(browser, o) {
+  const folder = resolve(o.work, 'trajectory-viewer');
+  const { server, url } = await serveViewer(o.cli, o.trajectory, folder);
+  try {
+    const { page, problems } = await openViewer(browser, url);
+    const info = await viewerValue(page, () => ({ timed: window.pmdplanViewer.timed, duration: window.pmdplanViewer.duration,
+      count: window.pmdplanViewer.stateCount, peak: window.pmdplanViewer.peakVelocityFraction() }));
+    assert.equal(info.timed, true, 'the trajectory viewer knows the path is timed');
+    assert.ok(info.duration > 0.1, `a trajectory of ${info.duration} s`);
+    assert.ok(info.peak <= 1 + 1e-4 && info.peak > 0.1, `peak velocity / limit ${info.peak}`);
+    assert.equal(await page.locator('#plots-panel').isVisible(), true, 'the joint plots are shown');
+    for (const id of ['#position-plot', '#velocity-plot']) {
+      const plot = imageContent(decodePng(await page.locator(id).screenshot()));
+      assert.ok(plot.foregroundShare > 0.01 && plot.distinctColours > 5, `${id} looks empty`);
+    }
+    // At 0.25× the play takes four times the trajectory's duration: long enough that a slow
+    // frame (software WebGL on a busy machine) hardly counts.
+    await page.locator('#loop').uncheck();
+    await page.locator('#speed').selectOption('0.25');
+    const before = await viewerValue(page, () => performance.now());
+    await page.locator('#play').click();
+    await page.waitForFunction(() => !window.pmdplanViewer.playing, null, { timeout: 60_000 });
+    const wall = ((await viewerValue(page, () => performance.now())) - before) / 1000;
+    const last = await viewerValue(page, () => window.pmdplanViewer.state);
+    assert.equal(last, info.count - 1, 'playing ends at the last state');
+    const ratio = (0.25 * wall) / info.duration;
+    log(`trajectory: ${info.duration.toFixed(3)} s played at 0.25x in ${wall.toFixed(3)} s of wall clock (ratio to real time ${ratio.toFixed(2)}), peak velocity ${(100 * info.peak).toFixed(1)} % of a limit`);
+    assert.ok(ratio > 0.9 && ratio < 2.0, `real-time playback: ${info.duration} s of trajectory at 0.25x took ${wall} s`);
+    const label = await page.locator('#state-label').innerText();
+    assert.ok(label.includes(`of ${info.duration.toFixed(2)} s`), `the label shows the clock: ${label}`);
+    const frames = await renderCount(page);
+    await page.locator('#timeline').fill(String(Math.floor(info.count / 2)));
+    await page.waitForFunction((n) => window.pmdplanViewer.renderCount > n, frames);
+    await page.screenshot({ path: join(o.work, 'viewer-trajectory.png') });
+    log(`screenshot ${join(o.work, 'viewer-trajectory.png')}`);
+    assert.deepEqual(problems, [], `the trajectory page reported problems:\n${problems.join('\n')}`);
+    await page.close();
+  } finally {
+    server.kill('SIGTERM');
+  }
+}
 
 async function main() {
   const o = options();
@@ -160,6 +249,55 @@ async function main() {
     assert.equal(await viewerValue(page, () => window.pmdplanViewer.playing), false, 'pause stops the animation');
     log(`play reached state ${await viewerValue(page, () => window.pmdplanViewer.state)}`);
     assert.ok((await viewerValue(page, () => window.pmdplanViewer.ghostCount)) >= 2, 'a ghost trail is drawn');
+    // Start (green) and goal (red) are drawn apart; switching them off changes the picture.
+    assert.ok((await viewerValue(page, () => window.pmdplanViewer.endsShown)) >= 2, 'start and goal copies are drawn');
+    const ghostsOff = () => page.locator('#ghost-mode').selectOption('off');
+    const endsChange = await hidingChange(page, join(o.work, 'viewer-start-goal.png'), ghostsOff,
+      () => page.locator('#show-ends').uncheck());
+    assert.ok(endsChange > 0.002, `hiding start and goal hardly changed the image (${(100 * endsChange).toFixed(3)} %)`);
+    log(`start / goal copies: ${(100 * endsChange).toFixed(2)} % of pixels; screenshot viewer-start-goal.png`);
+    // The palm trace: one point per state; hiding it changes the picture.
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.palmTracePoints), count, 'a palm trace point per state');
+    const traceChange = await hidingChange(page, join(o.work, 'viewer-palm-trace.png'), ghostsOff,
+      () => page.locator('#show-palm-trace').uncheck(), true);
+    assert.ok(traceChange > 0.0002, `hiding the palm trace hardly changed the image (${(100 * traceChange).toFixed(3)} %)`);
+    log(`palm trace: ${(100 * traceChange).toFixed(2)} % of pixels; screenshot viewer-palm-trace.png`);
+    await page.locator('#show-palm-trace').check();
+    await page.locator('#show-ends').check();
+    await page.locator('#ghost-mode').selectOption('hand');
+    // Objects by name: hiding the target and making the table transparent change the picture.
+    const objects = await viewerValue(page, () => window.pmdplanViewer.objectNames);
+    assert.ok(objects.includes('table') && objects.includes('goal_can'), `objects listed: ${objects}`);
+    assert.ok((await page.locator('#object-table').innerText()).includes('goal_can (target)'), 'the target is named in the legend');
+    const allShown = { image: decodePng(await page.locator('#view canvas').screenshot()) };
+    const objectFrames = await renderCount(page);
+    await page.locator('tr[data-object="goal_can"] input[type=checkbox]').uncheck();
+    await page.locator('tr[data-object="table"] input[type=range]').fill('0.3');
+    const changedObjects = await canvasAfterRender(page, objectFrames);
+    const objectChange = changedShare(allShown.image, changedObjects.image);
+    assert.ok(objectChange > 0.01, `hiding the can and a transparent table hardly changed the image (${(100 * objectChange).toFixed(3)} %)`);
+    await page.screenshot({ path: join(o.work, 'viewer-objects.png') });
+    log(`objects ${objects.join(', ')}: can hidden, table at 30 % opacity, ${(100 * objectChange).toFixed(2)} % of pixels; screenshot viewer-objects.png`);
+    await page.locator('tr[data-object="goal_can"] input[type=checkbox]').check();
+    await page.locator('tr[data-object="table"] input[type=range]').fill('1');
+    // The state is in the address: a reload opens the same state.
+    assert.ok((await viewerValue(page, () => window.location.hash)).startsWith('#state='), 'the state is in the URL');
+    const shownState = await viewerValue(page, () => window.pmdplanViewer.state);
+    await page.reload();
+    await page.waitForFunction(() => window.pmdplanViewer && window.pmdplanViewer.ready, null, { timeout: 60_000 });
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), shownState, 'a reload keeps the state from the URL');
+    log(`state ${shownState} kept in the URL across a reload`);
+    // "every 0" is refused: the field gets a usable spacing back, a note says why, and the trail
+    // stays at most 40 ghosts (plus the last state).
+    await page.locator('#ghost-every').fill('0');
+    await page.locator('#ghost-every').dispatchEvent('change');
+    const refused = await viewerValue(page, () => ({ value: document.getElementById('ghost-every').value,
+      note: document.getElementById('ghost-note').textContent, ghosts: window.pmdplanViewer.ghostCount }));
+    assert.ok(Number(refused.value) >= 1, `every 0 was kept: ${refused.value}`);
+    assert.ok(refused.note.includes('refused'), `no note for every 0: ${refused.note}`);
+    assert.ok(refused.ghosts <= 41, `every 0 drew ${refused.ghosts} ghosts`);
+    await page.locator('#ghost-note').screenshot({ path: join(o.work, 'viewer-ghosts-refused.png') });
+    log(`every 0 refused: every ${refused.value}, ${refused.ghosts} ghosts ("${refused.note}")`);
 
     // The screenshot a person would see, in the middle of the motion.
     frames = await renderCount(page);
@@ -174,6 +312,8 @@ async function main() {
     const fromDisk = await openViewer(browser, pathToFileURL(join(folder, 'index.html')).href);
     assert.deepEqual(fromDisk.problems, [], `from file://:\n${fromDisk.problems.join('\n')}`);
     log('viewer ready from file://');
+    await checkCollisions(browser, o);
+    if (o.trajectory) await checkTrajectory(browser, o);
   } finally {
     await browser.close();
     server.kill('SIGTERM');

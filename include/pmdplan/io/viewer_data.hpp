@@ -10,7 +10,13 @@
 //   robot     {name, palm_link, urdf (the URDF text), joint_names, lower, upper (active joints,
 //              rad), hand_joints, mimic: {joint: [source, multiplier, offset]}}
 //   path      {planner, seed, statistics, waypoint_count, state_spacing, states: [[rad ...]],
-//              waypoint_states: [state index of each waypoint]}
+//              waypoint_states: [state index of each waypoint],
+//              clearance: [m per state: the moving links' distance to the obstacles],
+//              colliding_links: [[link names] per state: the exact checker's colliding pairs]
+//              (both null, with a warning, when the checker cannot load the task's geometry),
+//              timing: null, or for a timed trajectory {duration, blend_tolerance, velocity_limits,
+//                      acceleration_limits, times: [s per state], velocities: [[rad/s ...]]}}
+//   warnings  ["the path's first point is not task T's start ...", ...]: shown on the page
 //   synergies {provenance, joint_names, lower, upper, own_axis_joints, orthonormal, mean,
 //              directions: [[...]], sigma, variance_fraction (normalised units), planner_directions,
 //              readout: {own_axis, coefficients, distance_from_subspace}: one row per state}
@@ -25,6 +31,7 @@
 
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/io/path_timeline.hpp"
+#include "pmdplan/io/trajectory_file.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
 #include "pmdplan/world/task.hpp"
 
@@ -40,7 +47,19 @@ struct ViewerDataParameters {
   /// The PMDs the planner samples (thumb base + this many): the viewer's default for the
   /// distance-from-subspace readout. Capped by the model's direction count.
   int plannerDirections = 4;
+  /// A timed trajectory (the viewer plays it in real time): its points are the states, and the
+  /// path given to viewerData() is trajectoryAsPathFile() of it. Null for a path file.
+  const TrajectoryFile* trajectory = nullptr;
 };
+
+/// A path's ends farther than this (rad, any joint) from the task's start and goal are not its ends.
+constexpr double kEndTolerance = 1e-6;
+
+/// Warnings for a path (in the robot's configuration order) whose ends are not the task's.
+std::vector<std::string> pathEndWarnings(const Task& task, const std::vector<Configuration>& points);
+
+/// The trajectory's positions as a path file's points (for viewerData with `trajectory` set).
+PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory);
 
 /// A file the viewer folder needs besides the data (a mesh obstacle's geometry).
 struct ViewerFolderFile {

@@ -25,6 +25,7 @@ struct Joint {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();          ///< unit axis in the joint frame
   double lower = 0.0;
   double upper = 0.0;
+  double velocity = 0.0;         ///< URDF <limit velocity> (rad/s or m/s); 0 when not given
   int activeIndex = -1;          ///< position in a Configuration; -1 for fixed and mimic joints
   int mimicSource = -1;          ///< index into joints(); value = multiplier * source + offset
   double mimicMultiplier = 1.0;

@@ -1,0 +1,32 @@
+#pragma once
+// The timed trajectory `pmdplan time` and `pmdplan plan --trajectory` write: the path timed
+// optimally under the robot's joint limits, its blends checked with the task's checker, written as
+// the trajectory JSON and, beside it, the same samples as CSV (F.json -> F.csv).
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <string>
+
+#include "pmdplan/collision/collision_checking.hpp"
+#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/trajectory/timed_path.hpp"
+#include "pmdplan/world/task.hpp"
+
+namespace pmdplan::cli {
+
+struct TrajectoryOutputOptions {
+  TimingSettings timing;
+  std::string jointLimits;       ///< joint-limits YAML (default: the robot's, beside its URDF)
+  double sampleInterval = 0.01;  ///< seconds between the written points
+};
+
+/// --blend-tolerance, --velocity-scale, --acceleration-scale, --joint-limits, --sample-interval.
+void addTrajectoryOptions(CLI::App& app, TrajectoryOutputOptions& options);
+
+/// TASK.path.json -> TASK.trajectory.json beside it.
+std::filesystem::path defaultTrajectoryFile(const std::filesystem::path& pathFile);
+
+/// Times `path`, writes `output` and its CSV; returns a line to print (duration, blends, checks).
+std::string writeTimedTrajectory(const Task& task, CollisionChecking& checking, const PathFile& path,
+                          const TrajectoryOutputOptions& options, const std::filesystem::path& output);
+
+}  // namespace pmdplan::cli
