@@ -5,7 +5,9 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/core/progress_line.hpp"
@@ -44,8 +46,11 @@ std::string pairsText(const CollisionReport& report) {
 int run(const Options& o) {
   const auto mode = parseHandSamplingMode(o.planner);
   if (!mode) throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected pmd or full");
-  if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
+  const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
+  checkOutputPath(output, "-o", {task.file, o.synergies});
+  if (!o.csv.empty()) checkOutputPath(o.csv, "--csv", {task.file, o.synergies, output});
   const auto checkerKind = parseCheckerKind(o.checker);
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
@@ -81,14 +86,13 @@ int run(const Options& o) {
       progress.update(p.elapsedSeconds, o.timeLimit, status);
     });
   } catch (const InputError& e) {
-    if (!e.file().empty()) throw;
+    if (!e.file().empty() || e.field().rfind("--", 0) == 0) throw;
     throw InputError(synergyFile.string(), e.field(), e.message());  // the sampler names the model's field
   }
   progress.finish();
   const PlannerStatus status = result.status;
   const auto& stats = result.statistics;
 
-  const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
   if (stats.solved()) {
     PathFile file{task.name, o.planner, o.seed, task.robot->activeJointNames(), result.path, mimicRelations(*task.robot), stats};
     writePathFile(output, file);
@@ -116,7 +120,7 @@ const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD ro
   app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
   app.add_option("--checker", o->checker, "fast (default: sphere model, FCL on flagged pairs; the same answers) or exact (FCL only)");
   app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
-  app.add_option("--seed", o->seed, "Random seed");
+  app.add_option("--seed", o->seed, "Random seed (a whole number >= 0)")->check(CLI::NonNegativeNumber);
   app.add_option("--time-limit", o->timeLimit, "Wall-clock limit in seconds");
   app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
   app.add_option("--neighbour-threshold", o->neighbourThreshold, "Neighbour radius as a multiple of d(start, goal)");

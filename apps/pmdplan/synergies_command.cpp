@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "command_registry.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
@@ -230,10 +231,24 @@ int runRecording(const Options& o) {
   return 0;
 }
 
+/// Every output is checked before any work, so a bad one leaves the others as they were.
+void checkOutputs(const Options& o) {
+  const std::initializer_list<std::filesystem::path> inputs{o.recording, o.calibration, o.mapping, o.graspit, o.show};
+  if (!o.output.empty()) checkOutputPath(o.output, "-o", inputs);
+  if (o.plots.empty()) return;
+  std::error_code error;
+  std::filesystem::create_directories(o.plots, error);
+  if (error || !std::filesystem::is_directory(o.plots))
+    throw InputError(o.plots, "--plots", "cannot create the folder" + (error ? ": " + error.message() : std::string()));
+  for (const char* figure : {"cumulative_variance.svg", "joint_pairs.svg"})
+    checkOutputPath(std::filesystem::path(o.plots) / figure, "--plots", inputs);
+}
+
 int run(const Options& o) {
   const int modes = !o.recording.empty() + !o.graspit.empty() + !o.show.empty();
   if (modes != 1)
     throw InputError("", "REC", "give exactly one of: a recording, --from-graspit FILE.xml, --show MODEL.yaml");
+  checkOutputs(o);
   if (!o.show.empty()) return runShow(o);
   if (!o.graspit.empty()) return runGraspIt(o);
   return runRecording(o);

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/path_validation.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_file.hpp"
@@ -20,7 +21,7 @@ struct Options {
 };
 
 int run(const Options& o) {
-  if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
   const PathFile file = readPathFile(o.path);
   if (file.jointNames != task.robot->activeJointNames())

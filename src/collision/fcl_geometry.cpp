@@ -4,6 +4,8 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <cmath>
+
 #include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan {
@@ -27,6 +29,8 @@ std::shared_ptr<fcl::CollisionGeometryd> loadMesh(const MeshShape& mesh) {
       const std::size_t offset = vertices.size();
       for (unsigned v = 0; v < part->mNumVertices; ++v) {
         const aiVector3D p = transform * part->mVertices[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+          throw InputError(mesh.file.string(), "vertex " + std::to_string(v + 1), "not a finite point (NaN or infinite coordinates)");
         vertices.emplace_back(p.x * mesh.scale.x(), p.y * mesh.scale.y(), p.z * mesh.scale.z());
       }
       for (unsigned f = 0; f < part->mNumFaces; ++f) {

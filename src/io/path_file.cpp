@@ -48,7 +48,7 @@ PathFile parsePathFile(const std::string& text, const std::string& file) {
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) {  // a syntax error, or a number beyond a double
     throw InputError(file, "", std::string("not valid JSON (") + error.what() + ")");
   }
   const Place root{file, ""};

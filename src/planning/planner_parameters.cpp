@@ -28,8 +28,8 @@ void PlannerParameters::check() const {
   if (handTrials < 1) throw InputError("", "hand-trials", "must be at least 1, got " + std::to_string(handTrials));
   if (minSweepVisits < 1) throw InputError("", "sweep-visits", "must be at least 1");
   if (maxSamples < 1) throw InputError("", "max-samples", "must be at least 1");
-  if (!(timeLimit > 0.0))
-    throw InputError("", "time-limit", "must be a positive number of seconds, got " + std::to_string(timeLimit));
+  if (!(timeLimit > 0.0) || (std::isfinite(timeLimit) && timeLimit > kMaxFiniteTimeLimitSeconds))
+    throw InputError("", "time-limit", "must be a positive number of seconds up to 1e6 (or inf: no limit), got " + std::to_string(timeLimit));
 }
 
 }  // namespace pmdplan

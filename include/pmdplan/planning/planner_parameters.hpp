@@ -13,6 +13,9 @@ enum class ArmBoxGrowth {
   Linear,     ///< rho_a(k) = k·rho_a(1): 1, 2, 3, 4 × rho_a (the other reading; the authors' Kautham code)
 };
 
+/// The longest finite time limit, 10^6 s (11.6 days).
+inline constexpr double kMaxFiniteTimeLimitSeconds = 1e6;
+
 struct PlannerParameters {
   /// rho_a: initial half-size of the arm hypercubes, normalised arm-joint units (Table 3: 0.001).
   /// Sweep k uses rho_a(k) = k·rho_a(k-1), as in Algorithm 4, capped at 1 (the whole arm box).
@@ -40,7 +43,8 @@ struct PlannerParameters {
   /// N: the run fails once this many arm trials (numSamples) have been made. Table 3 gives 100
   /// (10,000 full) for the authors' counting; here it is large, so the time limit is the real bound.
   std::size_t maxSamples = 10'000'000;
-  /// Wall-clock bound of the roadmap construction, seconds (may be +infinity). The only thing
+  /// Wall-clock bound of the roadmap construction, seconds, at most kMaxFiniteTimeLimitSeconds
+  /// (std::chrono's clock overflows past that order) or +infinity. The only thing
   /// time is allowed to change: a run it does not stop is the same for the same seed.
   double timeLimit = 60.0;
   /// Seed of the run's std::mt19937_64.
