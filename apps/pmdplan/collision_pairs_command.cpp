@@ -56,7 +56,7 @@ const CommandRegistrar registrar{
       app.add_option("robot", o->robot, "Built-in robot name or a .urdf path (its .srdf beside it holds the groups)");
       app.add_option("-o,--output", o->output, "Where to write (default: the robot's .srdf)");
       app.add_option("--samples", o->params.samples, "Configurations sampled over the whole joint box")->check(CLI::PositiveNumber);
-      app.add_option("--seed", o->params.seed, "Random seed (a whole number >= 0)")->check(CLI::NonNegativeNumber);
+      app.add_option("--seed", o->params.seed, "Random seed (a whole number >= 0)")->check(wholeNumber());
       return [o] { return run(*o); };
     }};
 

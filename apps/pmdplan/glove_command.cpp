@@ -98,7 +98,7 @@ const CommandRegistrar registrar{
       CLI::App* synthCommand = app.add_subcommand(
           "synth", "Write a SYNTHETIC operator's raw 22-sensor glove recording (CSV) and its calibration");
       synthCommand->add_option("--frames", synth->frames, "Number of frames at 100 Hz (default 13500, as in the paper)");
-      synthCommand->add_option("--seed", synth->seed, "Random seed (same seed, same bytes; default 1)")->check(CLI::NonNegativeNumber);
+      synthCommand->add_option("--seed", synth->seed, "Random seed (same seed, same bytes; default 1)")->check(wholeNumber());
       synthCommand->add_option("-o,--output", synth->output, "Recording to write (.csv)")->required();
       synthCommand->add_option("--calibration-out", synth->calibrationOutput,
                                "Calibration file to write (default: the recording's name with .calibration.yaml)");

@@ -120,7 +120,7 @@ const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD ro
   app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
   app.add_option("--checker", o->checker, "fast (default: sphere model, FCL on flagged pairs; the same answers) or exact (FCL only)");
   app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
-  app.add_option("--seed", o->seed, "Random seed (a whole number >= 0)")->check(CLI::NonNegativeNumber);
+  app.add_option("--seed", o->seed, "Random seed (a whole number >= 0)")->check(wholeNumber());
   app.add_option("--time-limit", o->timeLimit, "Wall-clock limit in seconds");
   app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
   app.add_option("--neighbour-threshold", o->neighbourThreshold, "Neighbour radius as a multiple of d(start, goal)");

@@ -64,6 +64,20 @@ void checkTree(const urdf::ModelInterface& model, const std::string& file) {
                                                        "' (a kinematic loop or a second tree)");
 }
 
+void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::ModelInterface& model, const std::string& file) {
+  const tinyxml2::XMLElement* root = document.RootElement();
+  for (const auto* e = root ? root->FirstChildElement("link") : nullptr; e; e = e->NextSiblingElement("link")) {
+    const char* name = e->Attribute("name");
+    const auto link = name ? model.getLink(name) : nullptr;
+    if (!link) continue;
+    std::size_t written = 0;
+    for (const auto* c = e->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision")) ++written;
+    if (link->collision_array.size() != written)
+      throw InputError(file, "link[" + link->name + "].collision (line " + std::to_string(e->GetLineNum()) + ")",
+                       "a collision element could not be read; sizes and origins must be finite numbers");
+  }
+}
+
 void checkGeometry(const urdf::Geometry& geometry, const std::string& file, const std::string& field) {
   switch (geometry.type) {
     case urdf::Geometry::BOX: {

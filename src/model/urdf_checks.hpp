@@ -19,6 +19,10 @@ void checkSize(const tinyxml2::XMLDocument& document, const std::string& file);
 /// One parent joint per link, no joint whose parent is its child, every link below the root.
 void checkTree(const urdf::ModelInterface& model, const std::string& file);
 
+/// Every <collision> element of the document was read: urdfdom drops one whose numbers it cannot
+/// parse ("nan", "inf", 1e400) without a word, which would leave a link that never collides.
+void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::ModelInterface& model, const std::string& file);
+
 /// Finite, positive sizes of a primitive; finite, non-zero mesh scales.
 void checkGeometry(const urdf::Geometry& geometry, const std::string& file, const std::string& field);
 

@@ -111,6 +111,7 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
   }
   model.name_ = parsed->getName();
   urdf_checks::checkTree(*parsed, file);
+  urdf_checks::checkAllCollisionsRead(document, *parsed, file);
 
   // Links in a deterministic order: the tree from the root, children in joint-name order.
   std::map<std::string, int> linkIndex;

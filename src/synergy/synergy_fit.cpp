@@ -54,7 +54,7 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
       if (!std::isfinite(postures(f, j)))
         throw InputError(source.file, "frame " + std::to_string(f + 1),
                          "joint " + joints[static_cast<std::size_t>(j)].name +
-                             " is not a finite number after calibration and mapping; check their coefficients");
+                             " is not a finite number after calibration and mapping; check the coefficients of the calibration and the mapping");
 
   Eigen::MatrixXd unit(frames, jointCount);
   for (Eigen::Index j = 0; j < jointCount; ++j) {

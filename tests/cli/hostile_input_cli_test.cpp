@@ -46,6 +46,8 @@ std::string robotUrdf(const std::string& extraLinks = "", const std::string& ext
 
 std::filesystem::path writeTask(const test::TempDir& dir, const std::string& urdf, const std::string& obstacles = "[]") {
   dir.write("robot.urdf", urdf);
+  dir.write("robot.srdf", "<robot name=\"r\"><group name=\"arm\"><joint name=\"a\"/></group><group name=\"hand\"><joint name=\"b\"/></group>"
+                          "<end_effector name=\"e\" parent_link=\"upper\" group=\"hand\"/></robot>\n");
   return dir.write("task.yaml", "name: t\nrobot: robot.urdf\nbase: {xyz: [0, 0, 0], rpy_deg: [0, 0, 0]}\nobstacles: " +
                                     obstacles + "\nstart: {joints: {a: 0, b: 0}}\ngoal: {joints: {a: 0.5, b: 0.5}}\n");
 }
@@ -63,8 +65,7 @@ TEST(HostileInput, AUrdfThatIsNotATreeIsRefusedNamingTheJoint) {
   auto task = writeTask(dir, robotUrdf("", "<joint name=\"loop\" type=\"fixed\"><parent link=\"tip\"/><child link=\"upper\"/></joint>\n"));
   expectBadInput(dir, "check " + quoted(task), {"robot.urdf", "link 'upper' already has the parent joint", "kinematic loops"});
   // A joint whose parent is its child.
-  task = writeTask(dir, robotUrdf("<link name=\"extra\"/>\n",
-                                  "<joint name=\"self\" type=\"fixed\"><parent link=\"tip\"/><child link=\"tip\"/></joint>\n"));
+  task = writeTask(dir, robotUrdf("", "<joint name=\"self\" type=\"fixed\"><parent link=\"tip\"/><child link=\"tip\"/></joint>\n"));
   expectBadInput(dir, "check " + quoted(task), {"robot.urdf", "joint[self]", "same link"});
 }
 
@@ -83,10 +84,10 @@ TEST(HostileInput, AChainOfTwentyThousandLinksIsRefusedAtOnce) {
 TEST(HostileInput, UrdfShapesNeedFinitePositiveSizes) {
   for (const std::string geometry :
        {"<sphere radius=\"nan\"/>", "<sphere radius=\"-0.1\"/>", "<sphere radius=\"0\"/>", "<box size=\"0.1 -0.1 0.1\"/>",
-        "<box size=\"nan 0.1 0.1\"/>", "<cylinder radius=\"inf\" length=\"0.1\"/>"}) {
+        "<box size=\"nan 0.1 0.1\"/>", "<cylinder radius=\"inf\" length=\"0.1\"/>", "<sphere radius=\"1e400\"/>"}) {
     test::TempDir dir;
     const auto task = writeTask(dir, robotUrdf("", "", geometry));
-    expectBadInput(dir, "check " + quoted(task), {"robot.urdf", "link[tip].collision[0]", "finite length greater than 0"});
+    expectBadInput(dir, "check " + quoted(task), {"robot.urdf", "link[tip].collision", "finite"});
   }
 }
 
@@ -116,8 +117,11 @@ TEST(HostileInput, TimeLimitsAndSeedsOutOfRangeAreRefused) {
   for (const std::string value : {"1e10", "1e308", "-1", "nan"})
     expectBadInput(dir, "plan can_on_table --time-limit " + value, {"time-limit"});
   expectBadInput(dir, "bench can_on_table --runs 1 --time-limit 1e308", {"--time-limit"});
-  expectBadInput(dir, "plan can_on_table --seed -1", {"--seed"});
-  expectBadInput(dir, "glove synth --frames 10 --seed -1 -o x.csv", {"--seed"});
+  for (const std::string command : {"plan can_on_table --seed -1", "glove synth --frames 10 --seed -1 -o x.csv"}) {
+    const auto result = runCli(dir, command);  // a command-line parse error: CLI11's message and --help hint
+    EXPECT_EQ(result.exitCode, 2) << command;
+    EXPECT_NE(result.err.find("--seed: expected a whole number >= 0, got '-1'"), std::string::npos) << result.err;
+  }
 }
 
 TEST(HostileInput, HugeFrameCountsAndEndlessFilesAreRefused) {
@@ -162,7 +166,7 @@ std::filesystem::path withRepeatedKey(const test::TempDir& dir, const std::strin
 
 TEST(HostileInput, RepeatedKeysInCalibrationMappingAndSynergyFilesAreRefused) {
   test::TempDir dir;
-  const auto model = withRepeatedKey(dir, "synergies/sah_tx90_default.yaml", "description:", "model.yaml");
+  const auto model = withRepeatedKey(dir, "synergies/sah_tx90_default.yaml", "provenance:", "model.yaml");
   expectBadInput(dir, "synergies --show " + quoted(model), {"model.yaml", "given twice"});
   const auto mapping = withRepeatedKey(dir, "glove/cyberglove22_to_sah.yaml", "description:", "mapping.yaml");
   expectBadInput(dir, "glove synth --frames 10 -o " + quoted(dir.path() / "x.csv") + " --mapping " + quoted(mapping),
@@ -174,14 +178,16 @@ TEST(HostileInput, RepeatedKeysInCalibrationMappingAndSynergyFilesAreRefused) {
 }
 
 TEST(HostileInput, CoefficientsThatOverflowNeverReachThePca) {
+  // A gain and a cross term of opposite signs that both overflow: inf - inf is NaN.
   test::TempDir dir;
-  std::string mapping = test::contents(std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "glove/cyberglove22_to_sah.yaml");
-  mapping.replace(mapping.find("{ThumbMPJ: 1}"), 13, "{ThumbMPJ: 1e308, ThumbIJ: -1e308}");
-  const auto file = dir.write("mapping.yaml", mapping);
-  const auto recording = std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "glove/synthetic_operator_sample.csv";
-  const auto result = runCli(dir, "synergies " + quoted(recording) + " --mapping " + quoted(file));
-  EXPECT_EQ(result.exitCode, 2) << result.err;
-  EXPECT_NE(result.err.find("finite"), std::string::npos) << result.err;
+  const auto glove = std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "glove";
+  std::string calibration = test::contents(glove / "synthetic_operator_sample.calibration.yaml");
+  calibration = std::regex_replace(calibration, std::regex("ThumbMPJ: \\{gain: [^,]*,"), "ThumbMPJ: {gain: -1e307,");
+  calibration = std::regex_replace(calibration, std::regex("- \\{sensor: ThumbRotate, from: ThumbAb, gain: [^}]*\\}"),
+                                   "- {sensor: ThumbMPJ, from: ThumbAb, gain: 1e307}");
+  const auto file = dir.write("calibration.yaml", calibration);
+  expectBadInput(dir, "synergies " + quoted(glove / "synthetic_operator_sample.csv") + " --calibration " + quoted(file),
+                 {"thumb_proximal", "not a finite number"});
 }
 
 /// A path file planned for can_on_table, for the path-file reproducers.
