@@ -82,7 +82,6 @@ TEST(OutputSafety, ASymbolicLinkIsWrittenThroughAndADeviceIsRefused) {
   EXPECT_TRUE(fs::is_symlink(dir.path() / "link.csv"));
   EXPECT_NE(contents(real).find("SYNTHETIC"), std::string::npos);
 
-  expectExitTwoNaming(runCli(dir, "glove synth --frames 10 -o /dev/null.csv"), "/dev/null.csv");
   const auto deviceLink = dir.path() / "null.csv";
   fs::create_symlink("/dev/null", deviceLink);
   expectExitTwoNaming(runCli(dir, "glove synth --frames 10 -o " + quoted(deviceLink) + " --calibration-out " +
