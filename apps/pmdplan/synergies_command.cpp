@@ -236,10 +236,7 @@ void checkOutputs(const Options& o) {
   const std::initializer_list<std::filesystem::path> inputs{o.recording, o.calibration, o.mapping, o.graspit, o.show};
   if (!o.output.empty()) checkOutputPath(o.output, "-o", inputs);
   if (o.plots.empty()) return;
-  std::error_code error;
-  std::filesystem::create_directories(o.plots, error);
-  if (error || !std::filesystem::is_directory(o.plots))
-    throw InputError(o.plots, "--plots", "cannot create the folder" + (error ? ": " + error.message() : std::string()));
+  createOutputFolder(o.plots, "--plots");
   for (const char* figure : {"cumulative_variance.svg", "joint_pairs.svg"})
     checkOutputPath(std::filesystem::path(o.plots) / figure, "--plots", inputs);
 }

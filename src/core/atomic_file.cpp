@@ -128,7 +128,7 @@ fs::path checkedTarget(const fs::path& path, const std::string& option) {
                      "exists and is not a regular file (a folder, device or pipe); pmdplan writes only regular files");
   const fs::path folder = target.parent_path();
   if (!fs::is_directory(folder, error))
-    throw InputError(path.string(), option, "the folder " + folder.string() + " does not exist; create it first");
+    throw InputError(path.string(), option, "the folder " + folder.string() + " does not exist (or is not a folder); create it first");
   if (::access(folder.c_str(), W_OK) != 0) failWrite(path, "cannot write into " + folder.string(), errno);
   return target;
 }
@@ -143,6 +143,13 @@ void checkOutputPath(const fs::path& path, const std::string& option, std::initi
       throw InputError(path.string(), option, "is also an input of this command (" + input.string() +
                                                   "); write the output to another file");
   }
+}
+
+void createOutputFolder(const fs::path& directory, const std::string& option) {
+  std::error_code error;
+  fs::create_directories(directory, error);
+  if (error || !fs::is_directory(directory))
+    throw InputError(directory.string(), option, "cannot create the folder" + (error ? ": " + error.message() : std::string()));
 }
 
 void writeFileAtomically(const fs::path& path, std::string_view content) {

@@ -212,6 +212,8 @@ TEST(HostileInput, PathFilesWithOverflowingNumbersOrForeignTasksAreBadInput) {
   EXPECT_EQ(result.exitCode, 2) << result.err;
   EXPECT_EQ(result.err.find("secret line"), std::string::npos) << result.err;
   EXPECT_EQ(result.err.find("root:x"), std::string::npos) << result.err;
+  // A viewer folder where a file is in the way.
+  expectBadInput(dir, "view " + quoted(dir.path() / "good.path.json") + " --out " + quoted(secret / "viewer"), {"--out", "cannot create the folder"});
 }
 
 }  // namespace

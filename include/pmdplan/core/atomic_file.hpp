@@ -24,6 +24,10 @@ inline constexpr std::size_t kMaxInputFileBytes = std::size_t{128} << 20;
 void checkOutputPath(const std::filesystem::path& path, const std::string& option,
                      std::initializer_list<std::filesystem::path> inputs = {});
 
+/// Creates the folder `directory` (and its parents) for outputs; throws InputError naming it
+/// (field `option`) when it cannot be made, say because a file is in the way.
+void createOutputFolder(const std::filesystem::path& directory, const std::string& option);
+
 /// Writes `content` to `path` atomically; throws InputError naming the path when the path breaks
 /// the rules above or the write fails (full disk, no permission).
 void writeFileAtomically(const std::filesystem::path& path, std::string_view content);
