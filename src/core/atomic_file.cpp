@@ -1,6 +1,7 @@
 #include "pmdplan/core/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -54,7 +55,7 @@ class PendingTemporary {
 public:
   explicit PendingTemporary(const std::string& path) {
     std::lock_guard lock(pendingMutex);
-    for (std::size_t i = 0; i < kSlots && path.size() < PATH_MAX; ++i) {
+    for (std::size_t i = 0; i < kSlots && !path.empty() && path.size() < PATH_MAX; ++i) {
       if (pendingUsed[i].load()) continue;
       std::memcpy(pendingPaths[i].data(), path.c_str(), path.size() + 1);
       pendingUsed[i].store(true);
@@ -157,9 +158,16 @@ void writeFileAtomically(const fs::path& path, std::string_view content) {
   installCleanupHandlers();
   removeStaleTemporaries(target);
   std::string pattern = (target.parent_path() / (temporaryPrefix(target) + std::to_string(::getpid()) + "-XXXXXX")).string();
+  // The signals wait while the file is created and registered, so the handler always knows it.
+  sigset_t cleanupSignals, previous;
+  sigemptyset(&cleanupSignals);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&cleanupSignals, signal);
+  ::pthread_sigmask(SIG_BLOCK, &cleanupSignals, &previous);
   const int fd = ::mkstemp(pattern.data());
-  if (fd < 0) failWrite(path, "cannot create a file in " + target.parent_path().string(), errno);
-  const PendingTemporary pending(pattern);
+  const int createError = errno;
+  const PendingTemporary pending(fd >= 0 ? pattern : std::string());
+  ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+  if (fd < 0) failWrite(path, "cannot create a file in " + target.parent_path().string(), createError);
   const auto abandon = [&](const std::string& what, int error) {
     ::close(fd);
     ::unlink(pattern.c_str());

@@ -21,6 +21,17 @@ void requirePositive(double value, const std::string& file, const std::string& f
     throw InputError(file, field, std::string(what) + " must be a finite length greater than 0, got " + shown(value));
 }
 
+/// urdfdom links children by shared_ptr: a loop is a reference cycle that would outlive the
+/// model. Cut the links' child lists before refusing it.
+[[noreturn]] void failTree(const urdf::ModelInterface& model, const std::string& file, const std::string& field,
+                           const std::string& message) {
+  for (const auto& [name, link] : model.links_) {
+    link->child_links.clear();
+    link->child_joints.clear();
+  }
+  throw InputError(file, field, message);
+}
+
 }  // namespace
 
 void checkSize(const tinyxml2::XMLDocument& document, const std::string& file) {
@@ -40,16 +51,16 @@ void checkTree(const urdf::ModelInterface& model, const std::string& file) {
   for (const auto& [name, joint] : model.joints_) {
     const std::string field = "joint[" + name + "]";
     if (joint->parent_link_name == joint->child_link_name)
-      throw InputError(file, field, "its parent and child are the same link '" + joint->child_link_name + "'");
+      failTree(model, file, field, "its parent and child are the same link '" + joint->child_link_name + "'");
     const auto [previous, inserted] = parentJoint.emplace(joint->child_link_name, name);
     if (!inserted)
-      throw InputError(file, field, "link '" + joint->child_link_name + "' already has the parent joint '" + previous->second +
+      failTree(model, file, field, "link '" + joint->child_link_name + "' already has the parent joint '" + previous->second +
                                         "'; a URDF is a tree: one parent per link, no kinematic loops");
   }
   // Every link must be reached from the root by following child joints (a loop detached from the
   // root has a parent everywhere and would otherwise be dropped silently).
   const auto root = model.getRoot();
-  if (!root) throw InputError(file, "robot", "no root link");
+  if (!root) failTree(model, file, "robot", "no root link");
   std::map<std::string, bool> reached{{root->name, true}};
   std::vector<urdf::LinkConstSharedPtr> pending{root};
   while (!pending.empty()) {
@@ -60,7 +71,7 @@ void checkTree(const urdf::ModelInterface& model, const std::string& file) {
   }
   for (const auto& [name, link] : model.links_)
     if (!reached.count(name))
-      throw InputError(file, "link[" + name + "]", "not connected to the root link '" + root->name +
+      failTree(model, file, "link[" + name + "]", "not connected to the root link '" + root->name +
                                                        "' (a kinematic loop or a second tree)");
 }
 
