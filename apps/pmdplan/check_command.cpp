@@ -10,6 +10,7 @@
 #include "command_registry.hpp"
 #include "robot_setup.hpp"
 #include "package_path_option.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/grasp_contact.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
@@ -68,7 +69,7 @@ std::string describe(const std::string& label, const nlohmann::json& c) {
 }
 
 int run(const Options& o) {
-  if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);

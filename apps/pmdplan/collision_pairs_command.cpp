@@ -61,7 +61,7 @@ const CommandRegistrar registrar{
       app.add_option("robot", o->robot, "Built-in robot name or a .urdf path (its .srdf beside it holds the groups)");
       app.add_option("-o,--output", o->output, "Where to write (default: the robot's .srdf)");
       app.add_option("--samples", o->params.samples, "Configurations sampled over the whole joint box")->check(CLI::PositiveNumber);
-      app.add_option("--seed", o->params.seed, "Random seed");
+      app.add_option("--seed", o->params.seed, "Random seed (a whole number >= 0)")->check(wholeNumber());
       app.add_option("--home", o->home, "Home pose JOINT=DEG,... (others at 0 or their nearest limit); pairs in contact there are skipped");
       return [o] { return run(*o); };
     }};

@@ -20,6 +20,16 @@ struct CommandEntry {
 
 std::vector<CommandEntry>& commandRegistry();
 
+/// For unsigned options (--seed): CLI11 would read "-1" as 2^64 - 1.
+inline CLI::Validator wholeNumber() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos) return std::string();
+        return "expected a whole number >= 0, got '" + text + "'";
+      },
+      "UINT");
+}
+
 struct CommandRegistrar {
   CommandRegistrar(std::string name, std::string description, CommandSetup setup) {
     commandRegistry().push_back({std::move(name), std::move(description), std::move(setup)});

@@ -34,11 +34,14 @@ struct SynthOptions {
 };
 
 int runSynth(const SynthOptions& o) {
-  if (o.frames < 1) throw InputError("", "--frames", "expected a positive number of frames");
+  if (o.frames < 1 || o.frames > kMaxSyntheticFrames)
+    throw InputError("", "--frames", "expected 1 to " + std::to_string(kMaxSyntheticFrames) + " frames, got " + std::to_string(o.frames));
   const std::filesystem::path output = o.output;
   if (output.extension() != ".csv") throw InputError("", "-o", "the synthetic recording is written as CSV: give a .csv file name");
   const std::filesystem::path calibrationPath =
       o.calibrationOutput.empty() ? calibrationBeside(output) : std::filesystem::path(o.calibrationOutput);
+  checkOutputPath(output, "-o", {o.mapping});
+  checkOutputPath(calibrationPath, "--calibration-out", {o.mapping, output});
   const HandMapping mapping = loadHandMapping(o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping));
   SyntheticOperatorParameters parameters;
   parameters.frames = o.frames;
@@ -72,6 +75,7 @@ struct ConvertOptions {
 };
 
 int runConvert(const ConvertOptions& o) {
+  checkOutputPath(o.output, "-o", {o.input});
   const GloveRecording recording = formatOf(o.input, o.from, "--from") == GloveFormat::Csv ? readGloveCsv(o.input)
                                                                                            : readGloveSerialStream(o.input);
   if (formatOf(o.output, o.to, "--to") == GloveFormat::Csv) {
@@ -95,7 +99,7 @@ const CommandRegistrar registrar{
       CLI::App* synthCommand = app.add_subcommand(
           "synth", "Write a SYNTHETIC operator's raw 22-sensor glove recording (CSV) and its calibration");
       synthCommand->add_option("--frames", synth->frames, "Number of frames at 100 Hz (default 13500, as in the paper)");
-      synthCommand->add_option("--seed", synth->seed, "Random seed (same seed, same bytes; default 1)");
+      synthCommand->add_option("--seed", synth->seed, "Random seed (same seed, same bytes; default 1)")->check(wholeNumber());
       synthCommand->add_option("-o,--output", synth->output, "Recording to write (.csv)")->required();
       synthCommand->add_option("--calibration-out", synth->calibrationOutput,
                                "Calibration file to write (default: the recording's name with .calibration.yaml)");

@@ -7,7 +7,9 @@
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
 #include "planner_setting_options.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/core/progress_line.hpp"
@@ -43,8 +45,11 @@ struct Options {
 int run(const Options& o) {
   const auto mode = parseHandSamplingMode(o.planner);
   if (!mode) throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected pmd or full");
-  if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
+  const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
+  checkOutputPath(output, "-o", {task.file, o.synergies});
+  if (!o.csv.empty()) checkOutputPath(o.csv, "--csv", {task.file, o.synergies, output});
   const auto checkerKind = parseCheckerKind(o.checker);
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
   planningSpaceFromRobot(*task.robot);  // a robot without groups is told how to get them before anything else
@@ -79,14 +84,13 @@ int run(const Options& o) {
       progress.update(p.elapsedSeconds, parameters.timeLimit, status);
     });
   } catch (const InputError& e) {
-    if (!e.file().empty()) throw;
+    if (!e.file().empty() || e.field().rfind("--", 0) == 0) throw;
     throw InputError(synergyFile.string(), e.field(), e.message());  // the sampler names the model's field
   }
   progress.finish();
   const PlannerStatus status = result.status;
   const auto& stats = result.statistics;
 
-  const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
   std::string trajectorySummary;
   if (stats.solved()) {
     PathFile file{task.name, o.planner, parameters.seed, task.robot->activeJointNames(), result.path, result.closingFrom,

@@ -12,6 +12,7 @@
 
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
@@ -263,12 +264,23 @@ int runRecording(const Options& o) {
   return 0;
 }
 
+/// Every output is checked before any work, so a bad one leaves the others as they were.
+void checkOutputs(const Options& o) {
+  const std::initializer_list<std::filesystem::path> inputs{o.recording, o.calibration, o.mapping, o.graspit, o.show};
+  if (!o.output.empty()) checkOutputPath(o.output, "-o", inputs);
+  if (o.plots.empty()) return;
+  createOutputFolder(o.plots, "--plots");
+  for (const char* figure : {"cumulative_variance.svg", "joint_pairs.svg"})
+    checkOutputPath(std::filesystem::path(o.plots) / figure, "--plots", inputs);
+}
+
 int run(const Options& o) {
   const int modes = !o.recording.empty() + !o.graspit.empty() + !o.show.empty() + !o.postures.empty();
   if (modes != 1)
     throw InputError("", "REC",
                      "give exactly one of: a glove recording, --postures FILE.csv (hand joint postures, no glove), "
                      "--from-graspit FILE.xml, --show MODEL.yaml");
+  checkOutputs(o);
   if (!o.show.empty()) return runShow(o);
   if (!o.postures.empty()) return runPostures(o);
   if (!o.graspit.empty()) return runGraspIt(o);

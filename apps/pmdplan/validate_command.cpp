@@ -6,6 +6,7 @@
 
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/path_validation.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_file.hpp"
@@ -22,7 +23,7 @@ struct Options {
 };
 
 int run(const Options& o) {
-  if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
   const PathFile file = readPathFile(o.path);
   if (file.jointNames != task.robot->activeJointNames())

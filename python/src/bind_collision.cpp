@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
 #include "pmdplan/core/input_error.hpp"
 
@@ -21,7 +22,7 @@ CheckerKind checkerKindFrom(const std::string& name) {
 }
 
 double toleranceMetres(double toleranceMm) {
-  if (!(toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  checkMotionToleranceMm(toleranceMm);  // the CLI's rule and message
   return toleranceMm / 1000.0;
 }
 

@@ -7,7 +7,10 @@
 #include <utility>
 
 #include "pmdplan/bench/planner_roster.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/planning/planner_parameters.hpp"
 
 namespace pmdplan {
 
@@ -27,20 +30,17 @@ void checkBenchOptions(const BenchOptions& o) {
   if (o.seed < 1) throw InputError("", "--seed", "expected a seed >= 1 (OMPL cannot take seed 0)");
   if (o.seed > std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(o.runs))
     throw InputError("", "--seed", "too large: the runs' seeds S .. S + runs - 1 must fit in 64 bits");
-  if (!(o.timeLimit > 0.0) || !std::isfinite(o.timeLimit))
-    throw InputError("", "--time-limit", "expected a positive, finite number of seconds");
-  if (!(o.graceSeconds >= 0.0) || !std::isfinite(o.graceSeconds))
-    throw InputError("", "--grace", "expected a non-negative, finite number of seconds");
-  if (!(o.toleranceMetres > 0.0) || !std::isfinite(o.toleranceMetres))
-    throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
+  if (!(o.timeLimit > 0.0) || !(o.timeLimit <= kMaxFiniteTimeLimitSeconds))
+    throw InputError("", "--time-limit", "expected a positive number of seconds up to 1e6");
+  if (!(o.graceSeconds >= 0.0) || !(o.graceSeconds <= kMaxFiniteTimeLimitSeconds))
+    throw InputError("", "--grace", "expected a non-negative number of seconds up to 1e6");
+  checkMotionToleranceMm(o.toleranceMetres * 1000.0);
   // An output is written when the campaign ends, hours later perhaps: its folder must exist now.
   const std::pair<const std::filesystem::path*, const char*> outputs[] = {
       {&o.csv, "--csv"}, {&o.markdown, "--markdown"}, {&o.omplLog, "--ompl-log"}, {&o.plot, "--plot"}};
   for (const auto& [path, field] : outputs) {
     if (path->empty()) continue;
-    const std::filesystem::path folder = path->has_parent_path() ? path->parent_path() : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(folder))
-      throw InputError(path->string(), field, "its folder '" + folder.string() + "' does not exist; expected a file in an existing folder");
+    checkOutputPath(*path, field, {o.synergies});
   }
   if (o.reportOnly && o.journal.empty())
     throw InputError("", "--report", "needs --journal DIR, the folder of the campaign whose finished runs to report");

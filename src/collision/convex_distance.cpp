@@ -200,10 +200,18 @@ double segmentDistance(const double* p0, const double* p1, const double* q0, con
   for (int i = 0; i < 3; ++i) d[i] = r[i] + d1[i] * s - d2[i] * t;
   return std::sqrt(dot3(d, d));
 }
+// GCC clones these for AVX2; clang (the sanitizer and fuzz build) rejects AVX vectors passed to the
+// non-cloned inline helpers, so there they are built for the baseline only (the same results).
+#if defined(__clang__)
+#define PMDPLAN_AVX2_CLONES
+#else
+#define PMDPLAN_AVX2_CLONES [[gnu::target_clones("avx2", "default")]]
+#endif
+
 
 // lanes::segmentDistance over plain arrays, four lanes at a time (built for AVX2 and the SSE2
 // baseline; the loader picks one for the running CPU).
-[[gnu::target_clones("avx2", "default")]] void segmentDistances(const double* p0, const double* p1, const double* q0, const double* q1,
+PMDPLAN_AVX2_CLONES void segmentDistances(const double* p0, const double* p1, const double* q0, const double* q1,
                                                                 double* distances) {
   using V = lanes::Vec<4>;
   constexpr int L = kSegmentLanes;
@@ -269,7 +277,7 @@ template <ConvexPart::Kind K>
 }  // namespace
 
 // Built for AVX2 and the SSE2 baseline; the loader picks one for the running CPU.
-[[gnu::target_clones("avx2", "default")]] void sphereGaps(const ConvexPart& part, const double* x, const double* y, const double* z,
+PMDPLAN_AVX2_CLONES void sphereGaps(const ConvexPart& part, const double* x, const double* y, const double* z,
                                                           const double* r, int count, double* gaps) {
   switch (part.kind) {
     case ConvexPart::Kind::Capsule: return gapsOf<ConvexPart::Kind::Capsule>(part, x, y, z, r, count, gaps);

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+
+#include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan {
 namespace {
@@ -61,7 +64,22 @@ double SweptDistanceBound::bound(const Configuration& from, const Configuration&
 
 long SweptDistanceBound::intervals(const Configuration& from, const Configuration& to, double tolerance) const {
   if (!(tolerance > 0.0)) throw std::invalid_argument("the motion tolerance must be positive");
-  return std::max(1L, static_cast<long>(std::ceil(bound(from, to) / tolerance - 1e-12)));
+  const double needed = std::ceil(bound(from, to) / tolerance - 1e-12);
+  if (!(needed <= static_cast<double>(kMaxSegmentIntervals))) {
+    std::ostringstream text;
+    text << "a segment would need " << needed << " states at " << tolerance * 1000.0 << " mm, more than the limit of "
+         << kMaxSegmentIntervals << " (a larger tolerance, or the robot's joint ranges or mimic multipliers are too large)";
+    throw InputError("", "--tolerance-mm", text.str());
+  }
+  return std::max(1L, static_cast<long>(needed));
+}
+
+void checkMotionToleranceMm(double mm) {
+  if (!(mm >= kMinToleranceMm && mm <= kMaxToleranceMm)) {
+    std::ostringstream text;
+    text << "expected a tolerance from " << kMinToleranceMm << " to " << kMaxToleranceMm << " millimetres, got " << mm;
+    throw InputError("", "--tolerance-mm", text.str());
+  }
 }
 
 }  // namespace pmdplan

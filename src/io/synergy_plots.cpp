@@ -229,7 +229,7 @@ std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& jo
 std::vector<std::filesystem::path> writeSynergyPlots(const std::filesystem::path& directory, const SynergyModel& model,
                                                      const Eigen::MatrixXd& postures, const JointLimits& joints,
                                                      const SynergyPlotOptions& options) {
-  std::filesystem::create_directories(directory);
+  createOutputFolder(directory, "--plots");
   std::vector<std::filesystem::path> written{directory / "cumulative_variance.svg"};
   writeFileAtomically(written.back(), cumulativeVarianceSvg(model));
   if (postures.rows() > 0) {

@@ -38,7 +38,7 @@ std::filesystem::path viewerAssetDirectory() {
 
 std::vector<std::filesystem::path> writeViewerFolder(const std::filesystem::path& directory, const ViewerData& data,
                                                      const std::filesystem::path& assetDirectory) {
-  std::filesystem::create_directories(directory);
+  createOutputFolder(directory, "--out");
   std::vector<std::filesystem::path> written;
   for (const auto& file : viewerAssetFiles()) {
     writeFileAtomically(directory / file, readTextFile(assetDirectory / file));
@@ -46,7 +46,7 @@ std::vector<std::filesystem::path> writeViewerFolder(const std::filesystem::path
   }
   for (const ViewerFolderFile& file : data.files) {
     const auto target = directory / file.relativePath;
-    std::filesystem::create_directories(target.parent_path());
+    createOutputFolder(target.parent_path(), "--out");
     writeFileAtomically(target, readTextFile(file.source));
     written.push_back(target);
   }

@@ -15,9 +15,14 @@
 #include "pmdplan/model/mesh_file.hpp"
 #include "pmdplan/model/resource_path.hpp"
 #include "srdf_name_matching.hpp"
+#include "urdf_checks.hpp"
 
 namespace pmdplan {
 namespace {
+
+/// Joint limits, mimic multipliers and offsets beyond this (rad, m) are refused: larger values make
+/// a segment's state count or normalised distances overflow.
+constexpr double kMaxJointMagnitude = 1000.0;
 
 /// urdfdom reports problems through console_bridge; keep the first error to put in our message
 /// instead of letting it print to the terminal.
@@ -98,6 +103,7 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
                      std::string("malformed XML: ") + document.ErrorStr());
   if (!document.RootElement() || std::string(document.RootElement()->Name()) != "robot")
     throw InputError(file, "root element", "expected <robot>");
+  urdf_checks::checkSize(document, file);
 
   urdf::ModelInterfaceSharedPtr parsed;
   {
@@ -111,6 +117,8 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
       throw InputError(file, "robot", "not a valid URDF: " + (errors.first.empty() ? std::string("urdfdom rejected it") : errors.first));
   }
   model.name_ = parsed->getName();
+  urdf_checks::checkTree(*parsed, file);
+  urdf_checks::checkAllCollisionsRead(document, *parsed, file);
 
   // Links in a deterministic order: the tree from the root, children in joint-name order.
   std::map<std::string, int> linkIndex;
@@ -121,6 +129,8 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
       const auto& collision = link->collision_array[i];
       if (!collision->geometry) continue;
       const std::string field = "link[" + link->name + "].collision[" + std::to_string(i) + "]";
+      urdf_checks::checkGeometry(*collision->geometry, file, field);
+      urdf_checks::checkPose(collision->origin, file, field);
       if (auto shape = toShape(*collision->geometry, urdf, field))
         out.collisionShapes.push_back({*shape, toIsometry(collision->origin)});
     }
@@ -149,6 +159,7 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
       j.origin = toIsometry(joint->parent_to_joint_origin_transform);
       const Eigen::Vector3d axis(joint->axis.x, joint->axis.y, joint->axis.z);
       const std::string field = "joint[" + joint->name + "]";
+      urdf_checks::checkPose(joint->parent_to_joint_origin_transform, file, field);
       switch (joint->type) {
         case urdf::Joint::FIXED: j.type = JointType::Fixed; break;
         case urdf::Joint::REVOLUTE: j.type = JointType::Revolute; break;
@@ -157,7 +168,7 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
         default: throw InputError(file, field, "joint type not supported (expected fixed, revolute, continuous or prismatic)");
       }
       if (j.type != JointType::Fixed) {
-        if (!(axis.norm() > 1e-12)) throw InputError(file, field + ".axis", "axis must be a non-zero vector");
+        if (!(axis.norm() > 1e-12) || !axis.allFinite()) throw InputError(file, field + ".axis", "axis must be a non-zero vector");
         j.axis = axis.normalized();
         if (j.type == JointType::Continuous && !hasLimitRange(joint->limits)) {
           // No range given: one turn, without wrap-around (see docs/bring_your_own_robot.md).
@@ -168,8 +179,8 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
           j.lower = joint->limits->lower;
           j.upper = joint->limits->upper;
           j.velocity = std::isfinite(joint->limits->velocity) && joint->limits->velocity > 0.0 ? joint->limits->velocity : 0.0;
-          if (!std::isfinite(j.lower) || !std::isfinite(j.upper) || !(j.lower < j.upper))
-            throw InputError(file, field + ".limit", "expected finite lower < upper, got " + std::to_string(j.lower) +
+          if (!(std::abs(j.lower) <= kMaxJointMagnitude) || !(std::abs(j.upper) <= kMaxJointMagnitude) || !(j.lower < j.upper))
+            throw InputError(file, field + ".limit", "expected lower < upper within +-1000 (rad or m), got " + std::to_string(j.lower) +
                                                          " .. " + std::to_string(j.upper));
         }
       }
@@ -195,8 +206,8 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
     j.mimicSource = src;
     j.mimicMultiplier = source->mimic->multiplier;
     j.mimicOffset = source->mimic->offset;
-    if (!std::isfinite(j.mimicMultiplier) || !std::isfinite(j.mimicOffset))
-      throw InputError(file, field, "multiplier and offset must be finite numbers");
+    if (!(std::abs(j.mimicMultiplier) <= kMaxJointMagnitude) || !(std::abs(j.mimicOffset) <= kMaxJointMagnitude))
+      throw InputError(file, field, "multiplier and offset must be finite numbers within +-1000");
   }
 }
 

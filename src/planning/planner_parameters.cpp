@@ -71,11 +71,8 @@ void PlannerParameters::check() const {
     throw InputError("", "kappa", "must be a positive, finite number of standard deviations, got " + text(pmdBox.kappa));
   if (pmdBox.maxDirections < 1)
     throw InputError("", "max-pmds", "must be a whole number >= 1, got " + std::to_string(pmdBox.maxDirections));
-  // A limit past a year is "no limit" for every purpose but std::chrono's, which would overflow.
-  constexpr double kLongestFiniteLimit = 365.0 * 24 * 3600;
-  if (!(timeLimit > 0.0) || (std::isfinite(timeLimit) && timeLimit > kLongestFiniteLimit))
-    throw InputError("", "time-limit",
-                     "must be a positive number of seconds, at most " + text(kLongestFiniteLimit) + " (or inf), got " + text(timeLimit));
+  if (!(timeLimit > 0.0) || (std::isfinite(timeLimit) && timeLimit > kMaxFiniteTimeLimitSeconds))
+    throw InputError("", "time-limit", "must be a positive number of seconds up to 1e6 (or inf: no limit), got " + text(timeLimit));
 }
 
 }  // namespace pmdplan

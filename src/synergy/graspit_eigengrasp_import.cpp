@@ -63,9 +63,11 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
   const XMLElement* root = document.RootElement();
   if (root == nullptr || std::string(root->Name()) != "EigenGrasps")
     throw InputError(file, root ? lineOf(root) : "line 1", "expected an <EigenGrasps dimensions=\"n\"> root element");
-  int dimensions = 0;
-  if (root->QueryIntAttribute("dimensions", &dimensions) != tinyxml2::XML_SUCCESS || dimensions <= 0)
-    throw InputError(file, lineOf(root) + " (dimensions)", "expected a positive whole number of dimensions");
+  const char* dimensionsText = root->Attribute("dimensions");
+  const auto parsedDimensions = dimensionsText ? parseWholeNumber(dimensionsText) : std::nullopt;
+  const int dimensions = parsedDimensions && *parsedDimensions <= 1000 ? static_cast<int>(*parsedDimensions) : 0;
+  if (dimensions <= 0)
+    throw InputError(file, lineOf(root) + " (dimensions)", "expected a whole number of dimensions from 1 to 1000");
   if (static_cast<std::size_t>(dimensions) != dimensionJoints.size())
     throw InputError(file, lineOf(root) + " (dimensions)",
                      "the file has " + std::to_string(dimensions) + " dimensions but " +

@@ -49,6 +49,13 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
     throw InputError(source.file, source.location.empty() ? "frames" : source.location,
                      std::to_string(frames) + " frame(s): a PCA needs more frames than joints");
 
+  for (Eigen::Index f = 0; f < frames; ++f)
+    for (Eigen::Index j = 0; j < jointCount; ++j)
+      if (!std::isfinite(postures(f, j)))
+        throw InputError(source.file, "frame " + std::to_string(f + 1),
+                         "joint " + joints[static_cast<std::size_t>(j)].name +
+                             " is not a finite number after calibration and mapping; check the coefficients of the calibration and the mapping");
+
   Eigen::MatrixXd unit(frames, jointCount);
   for (Eigen::Index j = 0; j < jointCount; ++j) {
     const JointLimit& limit = joints[static_cast<std::size_t>(j)];

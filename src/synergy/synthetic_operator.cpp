@@ -69,7 +69,8 @@ const std::vector<double>& syntheticOperatorVarianceFractions() {
 
 SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& parameters,
                                              const HandMapping& mapping, const JointLimits& handJoints) {
-  if (parameters.frames < 1) throw InputError("", "frames", "the synthetic operator needs at least 1 frame");
+  if (parameters.frames < 1 || parameters.frames > kMaxSyntheticFrames)
+    throw InputError("", "frames", "expected 1 to " + std::to_string(kMaxSyntheticFrames) + " frames, got " + std::to_string(parameters.frames));
   if (!(parameters.sampleRateHz > 0) || !(parameters.timeConstantS > 0) || !(parameters.totalVariance > 0))
     throw InputError("", "synthetic operator", "sample rate, time constant and total variance must be positive");
   const KauthamSahSynergies& table = kauthamSahSynergies();

@@ -12,6 +12,8 @@ namespace {
 
 constexpr const char* kObstacleForm =
     "an obstacle {name, one of box / cylinder / sphere / mesh, xyz, optional rpy_deg}";
+/// Every check tests the robot against every obstacle it reaches; a task has a handful.
+constexpr std::size_t kMaxObstacles = 1000;
 constexpr const char* kLength = "a length in metres greater than 0";
 
 Shape readBox(const YamlField& field) {
@@ -89,7 +91,11 @@ std::vector<Obstacle> readObstacles(const YamlField& list,
                                     const std::filesystem::path& taskDirectory) {
   std::vector<Obstacle> obstacles;
   std::map<std::string, std::string> firstPath;
-  for (const YamlField& item : list.elements(std::string("a list of ") + kObstacleForm)) {
+  const std::vector<YamlField> items = list.elements(std::string("a list of ") + kObstacleForm);
+  if (items.size() > kMaxObstacles)
+    list.fail("more than " + std::to_string(kMaxObstacles) + " obstacles (" + std::to_string(items.size()) +
+              "), the most a task may have");
+  for (const YamlField& item : items) {
     Obstacle obstacle = readObstacle(item, taskDirectory);
     if (const auto previous = firstPath.find(obstacle.name); previous != firstPath.end()) {
       item.child("name", "").fail("obstacle name '" + obstacle.name + "' is already used by " +

@@ -15,7 +15,11 @@ int oneBasedLine(const YAML::Node& node) {
   return mark.line >= 0 ? mark.line + 1 : 0;
 }
 
+/// Short values are quoted; a long one (a whole other file read by mistake) is only measured, so
+/// an error never shows a file's contents.
 std::string quoted(std::string_view text) {
+  if (text.size() > 40 || text.find('\n') != std::string_view::npos)
+    return "a text of " + std::to_string(text.size()) + " characters";
   std::string result(1, '\'');  // built by appending: GCC 12 warns falsely on "'" + string
   result.append(text);
   result.push_back('\'');

@@ -61,7 +61,7 @@ TEST(BenchOptions, RejectsTimeLimitsThatAreNotPositiveFiniteSeconds) {
 TEST(BenchOptions, RejectsANonPositiveTolerance) {
   BenchOptions o;
   o.toleranceMetres = 0.0;
-  expectInputError([&] { checkBenchOptions(o); }, "", "--tolerance-mm", "positive");
+  expectInputError([&] { checkBenchOptions(o); }, "", "--tolerance-mm", "0.01 to 100");
 }
 
 TEST(BenchOptions, SplitListKeepsEmptyItems) {

@@ -57,7 +57,7 @@ TEST(BenchCli, ZeroOrNegativeRunsAreBadInput) {
 TEST(BenchCli, AnOutputInAMissingFolderIsBadInputBeforeAnyRun) {
   for (const std::string option : {"--csv", "--markdown", "--ompl-log", "--plot"})
     expectBadInput("bench can_on_table --runs 1 " + option + " /no/such/folder/out", option,
-                   "its folder '/no/such/folder' does not exist");
+                   "the folder /no/such/folder does not exist");
 }
 
 TEST(BenchCli, AMissingTaskIsBadInput) {
@@ -72,7 +72,7 @@ TEST(BenchCli, ABadTimeLimitSeedCheckerToleranceOrGraceIsBadInput) {
   EXPECT_EQ(runCli("bench can_on_table --time-limit soon").exitCode, 2);
   expectBadInput("bench can_on_table --seed 0", "--seed", ">= 1");
   expectBadInput("bench can_on_table --checker fastest", "--checker", "expected exact or fast");
-  expectBadInput("bench can_on_table --tolerance-mm 0", "--tolerance-mm", "positive");
+  expectBadInput("bench can_on_table --tolerance-mm 0", "--tolerance-mm", "0.01 to 100");
   expectBadInput("bench can_on_table --grace -5", "--grace", "non-negative");
 }
 

@@ -12,6 +12,16 @@
 
 namespace pmdplan {
 
+/// The motion tolerance a check may use, millimetres: below 0.01 mm a segment needs millions of
+/// states (and the checkers' numerical margins are of that order); above 100 mm "free" says little.
+inline constexpr double kMinToleranceMm = 0.01;
+inline constexpr double kMaxToleranceMm = 100.0;
+/// The most intervals one segment may need (10^7); more is an InputError naming the tolerance.
+inline constexpr long kMaxSegmentIntervals = 10'000'000;
+
+/// Throws InputError (field --tolerance-mm) unless kMinToleranceMm <= mm <= kMaxToleranceMm.
+void checkMotionToleranceMm(double mm);
+
 class SweptDistanceBound {
 public:
   explicit SweptDistanceBound(const RobotModel& model);
@@ -21,7 +31,7 @@ public:
   /// Upper bound on how far any point of the robot moves from `from` to `to`.
   double bound(const Configuration& from, const Configuration& to) const;
   /// Number of equal intervals the segment needs so that no point moves more than `tolerance`
-  /// between consecutive states (at least 1).
+  /// between consecutive states (at least 1); more than kMaxSegmentIntervals is an InputError.
   long intervals(const Configuration& from, const Configuration& to, double tolerance) const;
 
 private:

@@ -31,6 +31,8 @@ std::string plannerPresetName(PlannerPreset preset);
 std::optional<PlannerPreset> parsePlannerPreset(const std::string& name);
 /// "paper, kautham, wide" for messages.
 std::string knownPlannerPresetNames();
+/// The longest finite time limit, 10^6 s (11.6 days).
+inline constexpr double kMaxFiniteTimeLimitSeconds = 1e6;
 
 struct PlannerParameters {
   /// rho_a: initial half-size of the arm hypercubes, normalised arm-joint units (Table 3: 0.001).
@@ -63,7 +65,8 @@ struct PlannerParameters {
   /// The PMD hand box: half-widths kappa·sigma_i and the most PMDs (thumb base + 4 in the paper's
   /// runs). Unused by the full-space baseline.
   SynergySamplingParameters pmdBox;
-  /// Wall-clock bound of the roadmap construction, seconds (may be +infinity). The only thing
+  /// Wall-clock bound of the roadmap construction, seconds, at most kMaxFiniteTimeLimitSeconds
+  /// (std::chrono's clock overflows past that order) or +infinity. The only thing
   /// time is allowed to change: a run it does not stop is the same for the same seed.
   double timeLimit = 60.0;
   /// Seed of the run's std::mt19937_64.

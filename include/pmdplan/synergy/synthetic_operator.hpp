@@ -15,8 +15,11 @@
 
 namespace pmdplan {
 
+/// The most frames a synthetic recording may have: 10^6 (2.8 h at 100 Hz, about 90 MB of CSV).
+inline constexpr int kMaxSyntheticFrames = 1000000;
+
 struct SyntheticOperatorParameters {
-  int frames = 13500;              ///< the paper's data set size
+  int frames = 13500;              ///< the paper's data set size; 1..kMaxSyntheticFrames
   std::uint64_t seed = 1;
   double sampleRateHz = 100.0;     ///< CyberGlove rate (FACTS §3)
   double timeConstantS = 0.8;      ///< correlation time of the smooth random motion (FACTS §4)

@@ -1,0 +1,32 @@
+#pragma once
+// Internal: what a URDF must satisfy before the reader walks it — a bounded size, a tree (one
+// parent per link, no joint from a link to itself, every link reachable from the root) and finite,
+// positive geometry — so that no file can make the reader recurse without end or build a shape
+// that never collides. Each check throws InputError naming the file and the link or joint.
+#include <string>
+
+#include <tinyxml2.h>
+#include <urdf_model/model.h>
+
+namespace pmdplan::urdf_checks {
+
+/// The most <link> (and <joint>) elements a URDF may have; real hand-arm systems have ~50.
+inline constexpr int kMaxLinks = 500;
+
+/// At most kMaxLinks links and joints in the document.
+void checkSize(const tinyxml2::XMLDocument& document, const std::string& file);
+
+/// One parent joint per link, no joint whose parent is its child, every link below the root.
+void checkTree(const urdf::ModelInterface& model, const std::string& file);
+
+/// Every <collision> element of the document was read: urdfdom drops one whose numbers it cannot
+/// parse ("nan", "inf", 1e400) without a word, which would leave a link that never collides.
+void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::ModelInterface& model, const std::string& file);
+
+/// Finite, positive sizes of a primitive; finite, non-zero mesh scales.
+void checkGeometry(const urdf::Geometry& geometry, const std::string& file, const std::string& field);
+
+/// A finite origin (position and rotation).
+void checkPose(const urdf::Pose& pose, const std::string& file, const std::string& field);
+
+}  // namespace pmdplan::urdf_checks
