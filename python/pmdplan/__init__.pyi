@@ -107,6 +107,8 @@ class PlannerSettings:
     max_samples: int
     time_limit: float
     seed: int
+    kappa: float
+    max_pmds: int
     smooth: bool
     def __init__(self, planner: str = "pmd") -> None: ...
     def check(self) -> None: ...

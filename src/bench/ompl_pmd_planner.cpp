@@ -126,6 +126,8 @@ void OmplPmdPlanner::declareParameters() {
                                [&p] { return static_cast<unsigned>(p.minSweepVisits); }, "1:1:100");
   declare<unsigned long>(set, "max_samples", [&p](unsigned long v) { p.maxSamples = v; },
                                     [&p] { return static_cast<unsigned long>(p.maxSamples); }, "");
+  declare<double>(set, "kappa", [&p](double v) { p.pmdBox.kappa = v; }, [&p] { return p.pmdBox.kappa; }, "0.1:0.1:5.");
+  declare<int>(set, "max_pmds", [&p](int v) { p.pmdBox.maxDirections = v; }, [&p] { return p.pmdBox.maxDirections; }, "1:1:12");
   declare<bool>(set, "smooth", [&p](bool v) { p.smooth = v; }, [&p] { return p.smooth; }, "0,1");
   declare<unsigned long>(set, "seed", [&p](unsigned long v) { p.seed = v; }, [&p] { return static_cast<unsigned long>(p.seed); }, "");
 }
@@ -180,7 +182,7 @@ ob::PlannerStatus OmplPmdPlanner::solve(const ob::PlannerTerminationCondition& p
   PlannerParameters parameters = parameters_;
   if (parameters.seed == 0) parameters.seed = static_cast<std::uint64_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
   planner_ = std::make_unique<PmdRoadmapPlanner>(space_, run->states, run->motions,
-                                                 makeHandSampler(mode_, space_, synergies_.get()), parameters);
+                                                 makeHandSampler(mode_, space_, synergies_.get(), parameters.pmdBox), parameters);
   planner_->setStartAndGoal(startConfiguration, goalConfiguration);
   planner_->setProgressCallback([run, &ptc](const PlannerProgress&) {
     if (ptc()) throw TerminationRequested{};
