@@ -3,7 +3,7 @@
 namespace pmdplan {
 
 const std::vector<Figure7JointPair>& figure7JointPairs() {
-  // FACTS §4: joints 8 & 11 positive, 6 & 9 positive, 8 & 10 positive, 4 & 10 negative,
+  // docs/reference_data.md §4: joints 8 & 11 positive, 6 & 9 positive, 8 & 10 positive, 4 & 10 negative,
   // 0 uncorrelated with 5 and with 12.
   static const std::vector<Figure7JointPair> pairs{
       {"middle_proximal", "ring_proximal", PaperCorrelation::Positive},

@@ -13,7 +13,7 @@ struct KauthamRow {
   std::array<double, 4> pmd;
 };
 
-// FACTS §4, as published (Kautham convention, p = 0 at Kautham's low limit).
+// docs/reference_data.md §4, as published (Kautham convention, p = 0 at Kautham's low limit).
 constexpr std::array<KauthamRow, 13> kRows{{
     {"thumb_base", true, .3055, {0, 0, 0, 0}},
     {"thumb_abduction", false, .3055, {-.0683, -.0144, .6638, -.2879}},
@@ -31,7 +31,7 @@ constexpr std::array<KauthamRow, 13> kRows{{
 }};
 constexpr std::array<double, 4> kSpan{1.6550, 1.4355, 0.8851, 0.7174};
 
-// Kautham's joint limits (FACTS §1), degrees, converted to positive flexion.
+// Kautham's joint limits (docs/reference_data.md §1), degrees, converted to positive flexion.
 JointLimit limitOf(const std::string& joint) {
   const double degree = M_PI / 180.0;
   const auto endsWith = [&](const char* suffix) {

@@ -16,7 +16,7 @@ struct LatentBasisSettings {
 };
 
 /// An orthonormal basis of the latent joints whose first four columns are PMD 1-4 with the thumb
-/// roll entry of PMD 1, 2 and 4 cleared (FACTS §4; PMD 3, thumb opposition, keeps it), after
+/// roll entry of PMD 1, 2 and 4 cleared (docs/reference_data.md §4; PMD 3, thumb opposition, keeps it), after
 /// Gram-Schmidt. The table says nothing about the remaining directions; they are chosen so that
 /// the thumb roll is as uncorrelated with the finger joints as the first four allow, as the paper
 /// observes (Sect. 4.2: joint 0 "rather independent" of the finger joints).

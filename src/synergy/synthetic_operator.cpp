@@ -214,7 +214,7 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
   const std::string seedText = std::to_string(parameters.seed);
   recording.notes = {
       "SYNTHETIC glove recording: made by pmdplan's synthetic operator, NOT captured from a human hand.",
-      "Latent synergies from the SAH PMD table of FACTS sect. 4 (paper Sect. 4), smooth random motion mixed with",
+      "Latent synergies from the SAH PMD table of docs/reference_data.md sect. 4 (paper Sect. 4), smooth random motion mixed with",
       "open/close, spread, opposition and pinch primitives; seed " + seedText + ", " + std::to_string(frames) +
           " frames at " + std::to_string(static_cast<int>(parameters.sampleRateHz)) + " Hz; raw CyberGlove counts.",
   };

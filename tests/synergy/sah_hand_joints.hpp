@@ -1,5 +1,5 @@
 #pragma once
-// The SAH hand joints of the built-in sah_tx90 robot (FACTS §1, positive flexion), built here so the
+// The SAH hand joints of the built-in sah_tx90 robot (docs/reference_data.md §1, positive flexion), built here so the
 // synergy tests do not depend on the robot model.
 #include <numbers>
 

@@ -1,11 +1,12 @@
 // Every object of the paper's tasks matters: without it, the PMD planner with the same seed plans
-// differently (another path, roadmap or sample count) for some seed, at the paper's neighbour
-// radius (1 x d(c_ini, c_goal)) and at twice it. An object that changes nothing makes the task
-// easier than the paper's description says it is.
+// differently (another path, roadmap or sample count) for some seed of 64, at the paper's neighbour
+// radius (1 x d(c_ini, c_goal)); the count at twice that radius is printed beside it. An object that
+// changes nothing makes the task easier than the paper's description says it is.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <numeric>
 #include <set>
 
 #include "pmdplan/collision/collision_checking.hpp"
@@ -48,19 +49,20 @@ const std::vector<SceneObjects>& sceneObjects() {
 
 const std::set<std::string> kSupports = {"table", "floor"};
 
-// Objects that on our model change no seeded plan yet, each placed as the authors' problem files
-// (or, for t_in_clutter, our reading of the paper's Fig. 16-4) give it: the paths of the pmd
-// planner never come near them. Not moved, because nothing in the paper's text or figures says
-// where else they would stand. They are still planned without, and reported when they start to
-// matter (for instance with a thicker hand), so the list can shrink.
+// Objects that on our model change no seeded plan over 64 seeds at either radius, each where the
+// authors' problem files (or, for t_in_clutter, our reading of the paper's Fig. 16-4) place it: the
+// pmd planner's samples never come near them. The published ones are not moved: nothing in the
+// paper's text or figures says where else they would stand (docs/deviations.md, "Objects that do
+// not matter", has the measurements). They are still planned without, and reported when they start
+// to matter, so the list can shrink.
 const std::set<std::string> kNotYetRelevant = {
-    "can_on_table/obstacle_can",      // published place, 39 mm from the goal hand
-    "can_in_box/box_wall_left",       // published place; mattered with the thinner hand, not with the SAH's thickness
+    // published places; the straight segment touches only the T's stem, the goal hand is 32 mm
+    // above the board the T stands on and the palm stays in front of the shelf
     "cans_in_shelf/shelf_panel_left+shelf_panel_right+shelf_board_0+shelf_board_1+shelf_board_2+shelf_board_3+shelf_board_4",
-    "cans_in_shelf/right_can",        // published, beside the T
-    "cans_in_shelf/left_can",         // published, beside the T
-    "t_in_clutter/mug+mug_handle",
-    "t_in_clutter/lying_book",
+    "cans_in_shelf/right_can",  // published, beside the T: 20 mm from the goal palm
+    "cans_in_shelf/left_can",   // published, beside the T
+    "t_in_clutter/mug+mug_handle",  // our layout: elsewhere on the table
+    "t_in_clutter/lying_book",      // our layout: 30 mm high, far below the passage
 };
 
 struct PlanOutcome {
@@ -114,17 +116,18 @@ TEST_P(ObstacleRelevance, EveryObstacleBesidesTheSupportsBelongsToAListedObject)
 TEST_P(ObstacleRelevance, RemovingAnyObjectChangesASeededPlan) {
   const Task task = loadTaskByName(GetParam().task);
   const SynergyModel model = loadSynergyModel(defaultSynergyModelPath(task.robot->name()));
-  // The paper's radius (1 × d(c_ini, c_goal)) and the wider one of earlier defaults.
+  // The paper's radius (1 × d(c_ini, c_goal)), asserted, and the wider one of earlier defaults.
   for (const double factor : {1.0, 2.0}) {
     std::vector<PlanOutcome> full;
-    const std::vector<std::uint64_t> seeds = {1, 2, 3, 4, 5, 6, 7, 8};
+    std::vector<std::uint64_t> seeds(64);
+    std::iota(seeds.begin(), seeds.end(), 1);
     for (const std::uint64_t seed : seeds) full.push_back(plan(task, model, seed, factor));
     for (const auto& object : GetParam().objects) {
       const Task reduced = without(task, object);
       int changed = 0;
       for (std::size_t s = 0; s < seeds.size(); ++s) changed += !(plan(reduced, model, seeds[s], factor) == full[s]);
       const bool listed = kNotYetRelevant.count(task.name + "/" + joined(object)) > 0;
-      if (!listed)
+      if (!listed && factor == 1.0)
         EXPECT_GT(changed, 0) << task.name << " without " << joined(object) << ", radius factor " << factor
                               << ": every seed plans as with it";
       std::printf("%s without %s, radius factor %.0f: %d of %zu seeds change%s\n", task.name.c_str(), joined(object).c_str(),

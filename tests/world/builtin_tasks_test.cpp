@@ -1,5 +1,5 @@
 // The five built-in tasks (data/scenes/*.yaml) load with the hand-arm model and carry the paper's
-// scenes, bases and published configurations (reference facts, section 5).
+// scenes, bases and published configurations (docs/reference_data.md §5).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -19,7 +19,7 @@ Task loadBuiltIn(const std::string& name) {
   return loadTask(std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "scenes" / (name + ".yaml"));
 }
 
-/// Arm J1..J6 then the hand in the order of the reference facts, degrees, positive = flexion.
+/// Arm J1..J6 then the hand in the order of docs/reference_data.md §5, degrees, positive = flexion.
 using PublishedConfiguration = std::array<double, 19>;
 const std::array<std::string, 19> kPublishedOrder = {
     "tx90_joint_1", "tx90_joint_2", "tx90_joint_3", "tx90_joint_4", "tx90_joint_5",

@@ -1,5 +1,5 @@
 #pragma once
-// The 22 sensors of the CyberGlove, in the order the glove sends them (FACTS §3). Recordings,
+// The 22 sensors of the CyberGlove, in the order the glove sends them (docs/reference_data.md §3). Recordings,
 // calibrations and mappings name sensors by these column names.
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 // The joint pairs whose correlations the paper shows in its Fig. 7, with the sign the paper
-// reports. The paper's joint values use Kautham's signs (flexion negative; FACTS §1, §4); ours use
+// reports. The paper's joint values use Kautham's signs (flexion negative; docs/reference_data.md §1, §4); ours use
 // positive flexion, so a pair of one flexion joint and one abduction joint changes sign.
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // The principal motion directions the paper's authors planned with (Kautham control files derived
-// from their glove data; FACTS §4), converted from Kautham's negative-flexion convention to ours:
+// from their glove data; docs/reference_data.md §4), converted from Kautham's negative-flexion convention to ours:
 // for thumb_base and every proximal and medium joint p = 1 - p_kautham and the components are
 // negated; abduction joints keep both.
 #include <Eigen/Core>
@@ -21,7 +21,7 @@ struct KauthamSahSynergies {
   Eigen::VectorXd mean;
   /// Columns: PMD 1-4 (unit vectors, our convention), zero on thumb_base and middle_abduction.
   Eigen::MatrixXd directions;
-  /// Box widths along the PMDs in the same units (not variances; see FACTS §4).
+  /// Box widths along the PMDs in the same units (not variances; see docs/reference_data.md §4).
   Eigen::VectorXd span;
 };
 

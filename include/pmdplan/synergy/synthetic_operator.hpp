@@ -1,5 +1,5 @@
 #pragma once
-// A synthetic glove operator (FACTS §4) for the SAH hand: NOT human data. Latent synergies from
+// A synthetic glove operator (docs/reference_data.md §4) for the SAH hand: NOT human data. Latent synergies from
 // the authors' PMD table drive the 11 glove-driven joints; each latent coordinate is smooth random
 // motion (an Ornstein-Uhlenbeck process) mixed with open/close, spread, thumb opposition and pinch
 // primitives. The postures are turned back into raw 22-sensor frames through the inverse of the
@@ -21,9 +21,9 @@ inline constexpr int kMaxSyntheticFrames = 1000000;
 struct SyntheticOperatorParameters {
   int frames = 13500;              ///< the paper's data set size; 1..kMaxSyntheticFrames
   std::uint64_t seed = 1;
-  double sampleRateHz = 100.0;     ///< CyberGlove rate (FACTS §3)
-  double timeConstantS = 0.8;      ///< correlation time of the smooth random motion (FACTS §4)
-  /// Total variance of the latent postures, normalised units squared (FACTS §4: 0.30-0.35).
+  double sampleRateHz = 100.0;     ///< CyberGlove rate (docs/reference_data.md §3)
+  double timeConstantS = 0.8;      ///< correlation time of the smooth random motion (docs/reference_data.md §4)
+  /// Total variance of the latent postures, normalised units squared (docs/reference_data.md §4: 0.30-0.35).
   double totalVariance = 0.32;
   /// Share of the time a motion primitive (open/close, spread, opposition, pinch) is under way.
   double primitiveShare = 0.6;
@@ -34,7 +34,7 @@ struct SyntheticGloveSession {
   GloveCalibration calibration; ///< the synthetic glove's calibration, described as synthetic
 };
 
-/// The target variance fractions of the latent directions (FACTS §4), largest first.
+/// The target variance fractions of the latent directions (docs/reference_data.md §4), largest first.
 const std::vector<double>& syntheticOperatorVarianceFractions();
 
 /// Throws InputError if the mapping cannot be inverted for the SAH's glove-driven joints (each must
