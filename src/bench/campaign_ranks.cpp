@@ -26,14 +26,6 @@ int launcherRankCount() {
   return 1;
 }
 
-bool CampaignRanks::builtWithMpi() {
-#ifdef PMDPLAN_WITH_MPI
-  return true;
-#else
-  return false;
-#endif
-}
-
 CampaignRanks::CampaignRanks() {
   const int launched = launcherRankCount();
 #ifdef PMDPLAN_WITH_MPI

@@ -23,9 +23,6 @@ public:
   /// Every rank passes its text; rank 0 gets all of them in rank order, the others get nothing.
   std::vector<std::string> gatherToFirst(const std::string& mine) const;
 
-  /// Whether this build can split campaigns across MPI ranks.
-  static bool builtWithMpi();
-
 private:
   int rank_ = 0;
   int size_ = 1;

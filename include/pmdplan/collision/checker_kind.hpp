@@ -1,6 +1,6 @@
 #pragma once
-// Which collision checker a planner runs on: the exact FCL reference, or the fast sphere-model
-// checker whose answers equal it (flagged pairs confirmed by FCL).
+// Which collision checker a planner runs on: the exact FCL reference, or the fast convex-part
+// checker (capsules and boxes screened in SIMD lanes) whose answers equal it (flagged pairs confirmed by FCL).
 #include <optional>
 #include <string>
 #include <string_view>

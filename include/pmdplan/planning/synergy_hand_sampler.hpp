@@ -36,8 +36,6 @@ public:
   int ownAxisCount() const { return static_cast<int>(ownAxisSlots_.size()); }
   /// PMDs in use (model's count capped by maxDirections).
   int directionCount() const { return static_cast<int>(halfWidths_.size()); }
-  /// lambda_i of the PMDs in use.
-  const Eigen::VectorXd& halfWidths() const { return halfWidths_; }
 
 private:
   std::vector<int> configIndex_;     ///< per model joint: its configuration index
