@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "package_path_option.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
@@ -22,6 +23,7 @@
 #include "pmdplan/glove/number_text.hpp"
 #include "pmdplan/io/event_stream_server.hpp"
 #include "pmdplan/io/live_csv_file.hpp"
+#include "pmdplan/io/robot_mimic.hpp"
 #include "pmdplan/io/viewer_data.hpp"
 #include "pmdplan/io/viewer_folder.hpp"
 #include "pmdplan/synergy/hand_mapping_file.hpp"
@@ -89,6 +91,7 @@ ViewerData liveViewerData(const Task& task, const SynergyModel* synergies, const
   still.planner = "glove";
   for (const auto& joint : task.robot->activeJoints()) still.jointNames.push_back(joint.name);
   still.points = {task.start, task.start};
+  still.mimic = mimicRelations(*task.robot);
   ViewerData data = viewerData(task, still, synergies, {"glove stream", synergyFile});
   data.document["title"] = "glove live · " + task.robot->name();
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
@@ -144,6 +147,18 @@ int run(const Options& o) {
     notes.push_back("filtered onto the own axes + the first " + std::to_string(filter->directions()) + " PMDs of " +
                     synergyFile.filename().string());
   const std::initializer_list<std::filesystem::path> inputs{o.replay, calibrationFile, mappingFile, synergyFile};
+  if (!o.output.empty()) checkOutputPath(o.output, "-o", inputs);  // before the viewer folder is written
+  if (!o.rawOutput.empty()) checkOutputPath(o.rawOutput, "--raw-out", inputs);
+  std::unique_ptr<EventStreamServer> server;
+  if (o.servePort) {
+    const std::filesystem::path folder = !o.out.empty() ? std::filesystem::path(o.out)
+                                         : !o.output.empty() ? std::filesystem::path(std::filesystem::path(o.output).replace_extension("").string() + "-viewer")
+                                                             : std::filesystem::path("glove-live-viewer");
+    writeViewerFolder(folder, liveViewerData(task, synergies ? &*synergies : nullptr, synergyFile, hand, source->description(), o.projectPmds),
+                      viewerAssetDirectory());
+    server = std::make_unique<EventStreamServer>(folder, *o.servePort);
+    std::cout << "serving " << folder.string() << " at http://127.0.0.1:" << server->port() << "/ (live; Ctrl-C to stop)" << std::endl;
+  }
   std::optional<LiveCsvFile> postures, raw;
   if (!o.output.empty()) {
     std::vector<std::string> postureNotes = notes;
@@ -158,16 +173,6 @@ int run(const Options& o) {
     raw.emplace(o.rawOutput, "--raw-out", notes, header, inputs);
   }
 
-  std::unique_ptr<EventStreamServer> server;
-  if (o.servePort) {
-    const std::filesystem::path folder = !o.out.empty() ? std::filesystem::path(o.out)
-                                         : !o.output.empty() ? std::filesystem::path(o.output).replace_extension("").string() + "-viewer"
-                                                             : std::filesystem::path("glove-live-viewer");
-    writeViewerFolder(folder, liveViewerData(task, synergies ? &*synergies : nullptr, synergyFile, hand, source->description(), o.projectPmds),
-                      viewerAssetDirectory());
-    server = std::make_unique<EventStreamServer>(folder, *o.servePort);
-    std::cout << "serving " << folder.string() << " at http://127.0.0.1:" << server->port() << "/ (live; Ctrl-C to stop)" << std::endl;
-  }
   catchStopSignals();
   std::cout << "streaming from " << source->description() << std::endl;
 

@@ -21,9 +21,13 @@ double secondsBetween(Clock::time_point from, Clock::time_point to) { return std
 class DeviceSource final : public GloveLiveSource {
 public:
   DeviceSource(const std::string& path, const GloveDeviceSettings& settings)
-      : settings_(settings), device_(path, settings.baud), opened_(Clock::now()), lastReply_(opened_), nextRequest_(opened_) {}
+      : settings_(settings), device_(path, settings.baud) {}
 
   GloveLiveStatus next(GloveLiveFrame& frame, const std::function<bool()>& stopRequested) override {
+    if (!started_) {  // the timeout runs from the first wait, not from the opening
+      started_ = true;
+      lastReply_ = nextRequest_ = Clock::now();
+    }
     for (;;) {
       if (const auto reply = scanner_.next()) {
         const auto now = Clock::now();
@@ -75,7 +79,7 @@ private:
     const std::string seconds = messageNumberText(settings_.timeoutS) + " s";
     if (frames_ == 0)
       return InputError(device_.path(), "--timeout",
-                        "no 'G' reply within " + seconds + " of opening the device: is the glove connected and switched on, at --baud " +
+                        "no 'G' reply in the first " + seconds + " of the stream: is the glove connected and switched on, at --baud " +
                             std::to_string(settings_.baud) +
                             (settings_.pollRateHz > 0 ? "?" : "? (with --poll-rate 0 it must stream by itself)"));
     return InputError(device_.path(), "--timeout",
@@ -85,7 +89,8 @@ private:
   GloveDeviceSettings settings_;
   GloveSerialDevice device_;
   GloveReplyScanner scanner_;
-  Clock::time_point opened_, first_, lastReply_, nextRequest_;
+  bool started_ = false;
+  Clock::time_point first_, lastReply_, nextRequest_;
   long long frames_ = 0;
 };
 

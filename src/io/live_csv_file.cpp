@@ -26,7 +26,10 @@ LiveCsvFile::LiveCsvFile(std::filesystem::path target, const std::string& option
 }
 
 LiveCsvFile::~LiveCsvFile() {
-  if (file_) std::fclose(file_);
+  if (!file_) return;
+  std::fclose(file_);
+  std::error_code ignored;
+  if (rows_ == 0) std::filesystem::remove(partial_, ignored);
 }
 
 void LiveCsvFile::addRow(const std::string& row) {

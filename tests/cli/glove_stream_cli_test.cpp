@@ -296,7 +296,7 @@ TEST(GloveStreamCli, AGloveThatNeverSendsTimesOutWithAMessage) {
   const auto stream = startStream(dir, "--device " + line.host().string() + " --timeout 0.5 --calibration " + kCalibration.string() +
                                            " -o " + (dir.path() / "rec.csv").string());
   EXPECT_EQ(waitFor(stream.pid, 10s), 2);
-  EXPECT_THAT(stream.stderrText(), HasSubstr("no 'G' reply within 0.5 s of opening the device"));
+  EXPECT_THAT(stream.stderrText(), HasSubstr("no 'G' reply in the first 0.5 s of the stream"));
   EXPECT_THAT(stream.stderrText(), HasSubstr(line.host().string()));
 }
 

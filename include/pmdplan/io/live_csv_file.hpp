@@ -18,7 +18,7 @@ public:
   /// opens the partial file and writes the '#' note lines and the header.
   LiveCsvFile(std::filesystem::path target, const std::string& option, const std::vector<std::string>& notes,
               const std::string& header, std::initializer_list<std::filesystem::path> inputs = {});
-  /// Closes and leaves the partial file if finish() was not called (the process is going down).
+  /// Without finish(): closes, and leaves the partial file if it holds rows (removes it if not).
   ~LiveCsvFile();
   LiveCsvFile(const LiveCsvFile&) = delete;
   LiveCsvFile& operator=(const LiveCsvFile&) = delete;
