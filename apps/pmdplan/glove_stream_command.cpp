@@ -94,6 +94,7 @@ ViewerData liveViewerData(const Task& task, const SynergyModel* synergies, const
   still.mimic = mimicRelations(*task.robot);
   ViewerData data = viewerData(task, still, synergies, {"glove stream", synergyFile});
   data.document["title"] = "glove live · " + task.robot->name();
+  data.document["warnings"] = nlohmann::ordered_json::array();  // a still pose, not a path: its ends are no one's goal
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
   for (const auto& joint : hand) joints.push_back(joint.name);
   data.document["live"] = {{"events", "events"},

@@ -10,7 +10,21 @@ const KEPT_RECEIPTS = 5000;
 const BADGE_STYLE = 'position:absolute;top:10px;right:10px;padding:4px 10px;border-radius:4px;font:bold 13px/1.4 monospace;'
   + 'color:#fff;background:#b03a2e;box-shadow:0 1px 3px rgba(0,0,0,.3);pointer-events:none;white-space:pre';
 
+/// The page around a still path becomes the live page: no timeline, no ghosts or start and goal
+/// copies of the still state, no synergy readout or explorer of it (the live posture is not one of
+/// its states, and it would override the explorer's).
+function liveLayout() {
+  for (const id of ['play', 'timeline', 'state-label', 'clearance-label', 'synergy-panel', 'explorer-panel']) byId(id).hidden = true;
+  for (const [id, value] of [['ghost-mode', 'off'], ['show-ends', false], ['show-palm-trace', false]]) {
+    const input = byId(id);
+    if (typeof value === 'boolean') input.checked = value;
+    else input.value = value;
+    input.dispatchEvent(new Event('change'));
+  }
+}
+
 export function startLiveGlove(live, { robot, view, jointTable }) {
+  liveLayout();
   const badge = element('div', { id: 'live-badge', style: BADGE_STYLE });
   byId('view').append(badge);
   const status = {

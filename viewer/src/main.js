@@ -69,6 +69,7 @@ function describe(data, notes) {
   byId('subtitle').textContent = timing
     ? `timed trajectory: ${timing.duration.toFixed(3)} s, ${data.path.states.length} points, blend tolerance ${timing.blend_tolerance} rad`
     : `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
+  if (data.live) byId('subtitle').textContent = `live: ${data.live.source}`;
   const lines = [
     `path: ${data.sources.path_file} (${data.path.planner}, seed ${data.path.seed})`,
     `task: ${data.task.name} (${data.sources.task_file})${data.task.description ? ' · ' + data.task.description : ''}`,

@@ -97,9 +97,12 @@ async function main() {
     // Two moments: frame 30 and frame 110 of the recording (a closing hand against an opener one).
     const moment = async (frame, file) => {
       send(frame + 1 - sent);
-      await page.waitForFunction((n) => window.pmdplanViewer.live.lastFrame === n, frame, { timeout: 20_000 });
-      const renders = await page.evaluate(() => window.pmdplanViewer.renderCount);
-      await page.waitForFunction((n) => window.pmdplanViewer.renderCount > n, renders, { timeout: 20_000 });
+      await page.waitForFunction((n) => window.pmdplanViewer.live.lastFrame === n, frame, { timeout: 20_000 }).catch(async (error) => {
+        const live = await page.evaluate(() => JSON.stringify({ ...window.pmdplanViewer.live, receipts: undefined }));
+        throw new Error(`${error.message}\nthe page's live status: ${live}\n${problems.join('\n')}\npmdplan:\n${out}${err}`);
+      });
+      // The frame's render is requested on arrival and drawn at the next animation frame.
+      await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
       const joints = await page.evaluate((names) => names.map((name) => window.pmdplanViewer.jointValue(name)), handJoints);
       const png = await page.locator('#view canvas').screenshot();
       await page.screenshot({ path: join(o.work, file) });
@@ -123,19 +126,22 @@ async function main() {
     }
     await page.waitForFunction((n) => window.pmdplanViewer.live.lastFrame === n, sent - 1, { timeout: 20_000 });
     const receipts = await page.evaluate(() => window.pmdplanViewer.live.receipts);
-    const serialToPage = [], readToPage = [];
+    const serialToPage = [], serialToRead = [], readToPage = [];
     for (const r of receipts) {
       if (r.frame < base) continue;
       serialToPage.push(r.receivedMs - writtenMs[r.frame]);
+      serialToRead.push(r.readMs - writtenMs[r.frame]);
       readToPage.push(r.receivedMs - r.readMs);
     }
-    serialToPage.sort((a, b) => a - b);
-    readToPage.sort((a, b) => a - b);
+    for (const list of [serialToPage, serialToRead, readToPage]) list.sort((a, b) => a - b);
     const fps = await page.evaluate(() => window.pmdplanViewer.live.fps);
     console.log(`LATENCY serial write -> page receipt over ${serialToPage.length} frames at 100 Hz: median ${percentile(serialToPage, 0.5)} ms, `
       + `p95 ${percentile(serialToPage, 0.95)} ms, max ${serialToPage[serialToPage.length - 1]} ms `
-      + `(pmdplan's read -> page: median ${percentile(readToPage, 0.5).toFixed(1)} ms); page rate ${fps.toFixed(1)} fps`);
-    writeFileSync(join(o.work, 'latency.json'), JSON.stringify({ serialToPageMs: serialToPage, readToPageMs: readToPage }) + '\n');
+      + `(serial write -> pmdplan's read: median ${percentile(serialToRead, 0.5).toFixed(1)} ms, p95 ${percentile(serialToRead, 0.95).toFixed(1)} ms; `
+      + `pmdplan's read -> page: median ${percentile(readToPage, 0.5).toFixed(1)} ms, p95 ${percentile(readToPage, 0.95).toFixed(1)} ms); `
+      + `page rate ${fps.toFixed(1)} fps`);
+    writeFileSync(join(o.work, 'latency.json'),
+      JSON.stringify({ serialToPageMs: serialToPage, serialToReadMs: serialToRead, readToPageMs: readToPage }) + '\n');
     assert.equal(serialToPage.length, 300, 'the page missed frames');
 
     // Unplug: the stream ends, the page says so, the recording is kept.
