@@ -148,6 +148,8 @@ int run(const Options& o) {
     notes.push_back("filtered onto the own axes + the first " + std::to_string(filter->directions()) + " PMDs of " +
                     synergyFile.filename().string());
   const std::initializer_list<std::filesystem::path> inputs{o.replay, calibrationFile, mappingFile, synergyFile};
+  if (!o.output.empty() && !o.rawOutput.empty() && std::filesystem::weakly_canonical(o.output) == std::filesystem::weakly_canonical(o.rawOutput))
+    throw InputError(o.output, "--raw-out", "the posture recording (-o) and the raw one (--raw-out) must be two files");
   if (!o.output.empty()) checkOutputPath(o.output, "-o", inputs);  // before the viewer folder is written
   if (!o.rawOutput.empty()) checkOutputPath(o.rawOutput, "--raw-out", inputs);
   std::unique_ptr<EventStreamServer> server;

@@ -314,6 +314,14 @@ TEST(GloveStreamCli, ANonTerminalDeviceAndAMissingCalibrationAreInputErrors) {
   result = test::runCli(dir, "glove stream --replay " + quoted(kSample));
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_THAT(result.err, HasSubstr("nothing to do"));
+  result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " -o " + quoted(dir.path() / "a.csv") + " --raw-out " +
+                                 quoted(dir.path() / "a.csv"));
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_THAT(result.err, HasSubstr("must be two files"));
+  result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " -o " + quoted(kSample));
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_THAT(result.err, HasSubstr("-o"));
+  EXPECT_EQ(contents(kSample).rfind("# SYNTHETIC", 0), 0u);  // the input is untouched
 }
 
 TEST(GloveStreamCli, AReplayPlaysAtItsRecordedRateAndCanBeFilteredOntoThePmds) {
