@@ -116,7 +116,7 @@ double epochMilliseconds() {
 
 int run(const Options& o) {
   if (o.device.empty() == o.replay.empty())
-    throw InputError("", "--device", "give the glove's serial device (--device /dev/ttyUSB0) or a recording to play (--replay REC.csv), not both");
+    throw InputError("", "--device", "give one source: the glove's serial device (--device /dev/ttyUSB0) or a recording to play (--replay REC.csv)");
   if (o.output.empty() && o.rawOutput.empty() && !o.servePort)
     throw InputError("", "-o", "nothing to do: give -o POSTURES.csv (the recording), --raw-out RAW.csv, --serve PORT (the live viewer), or several");
   if (o.frames < 0) throw InputError("", "--frames", "expected 0 (no limit) or a number of frames to stop after");
