@@ -1,10 +1,12 @@
 // `pmdplan glove synth …`: a synthetic operator's glove recording (raw CyberGlove frames plus the
 // calibration file they need) — NOT human data, and every file says so.
 // `pmdplan glove convert IN -o OUT`: between the CSV form and the raw 'G'-reply serial stream.
+// `pmdplan glove stream …`: the glove live (glove_stream_command.cpp).
 #include <iostream>
 #include <memory>
 
 #include "command_registry.hpp"
+#include "glove_stream_command.hpp"
 #include "package_path_option.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
@@ -93,7 +95,7 @@ int runConvert(const ConvertOptions& o) {
 }
 
 const CommandRegistrar registrar{
-    "glove", "Glove recordings: a synthetic operator (synth), format conversion (convert)", [](CLI::App& app) {
+    "glove", "Glove recordings: a synthetic operator (synth), format conversion (convert), the glove live (stream)", [](CLI::App& app) {
       app.require_subcommand(1);
       auto synth = std::make_shared<SynthOptions>();
       CLI::App* synthCommand = app.add_subcommand(
@@ -113,7 +115,11 @@ const CommandRegistrar registrar{
       convertCommand->add_option("-o,--output", convert->output, "Recording to write")->required();
       convertCommand->add_option("--from", convert->from, "Input format: csv, serial or auto (by extension)");
       convertCommand->add_option("--to", convert->to, "Output format: csv, serial or auto (by extension)");
-      return [synth, convert, synthCommand] { return synthCommand->parsed() ? runSynth(*synth) : runConvert(*convert); };
+      auto stream = addGloveStreamCommand(app);
+      return [synth, convert, synthCommand, convertCommand, stream] {
+        if (synthCommand->parsed()) return runSynth(*synth);
+        return convertCommand->parsed() ? runConvert(*convert) : stream();
+      };
     }};
 
 }  // namespace

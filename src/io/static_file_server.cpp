@@ -104,9 +104,7 @@ void StaticFileServer::serveForever() {
   for (;;) serveOne();
 }
 
-void StaticFileServer::serveOne() {
-  const int connection = ::accept(socket_, nullptr, nullptr);
-  if (connection < 0) return;
+std::string readRequestHead(int connection) {
   // A client that connects and says nothing must not hang the server for everyone else.
   timeval timeout{5, 0};
   ::setsockopt(connection, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
@@ -117,25 +115,36 @@ void StaticFileServer::serveOne() {
     if (n <= 0) break;
     request.append(buffer, static_cast<std::size_t>(n));
   }
+  return request;
+}
+
+std::string requestTarget(const std::string& request) {
+  std::istringstream line(request.substr(0, request.find("\r\n")));
+  std::string method, target;
+  line >> method >> target;
+  return method == "GET" ? target.substr(0, target.find_first_of("?#")) : std::string();
+}
+
+std::string staticFileResponse(const std::filesystem::path& root, const std::string& request) {
   std::istringstream line(request.substr(0, request.find("\r\n")));
   std::string method, target;
   line >> method >> target;
   std::string relative;
-  if (method != "GET" && method != "HEAD") {
-    sendAll(connection, response(405, "Method Not Allowed", "text/plain", "only GET and HEAD\n", true));
-  } else if (!decodeTarget(target, relative)) {
-    sendAll(connection, response(403, "Forbidden", "text/plain", "outside the viewer folder\n", method == "GET"));
-  } else {
-    const std::filesystem::path file = root_ / relative;
-    std::ifstream in(file, std::ios::binary);
-    if (!std::filesystem::is_regular_file(file) || !in) {
-      sendAll(connection, response(404, "Not Found", "text/plain", "not found: " + relative + "\n", method == "GET"));
-    } else {
-      std::ostringstream body;
-      body << in.rdbuf();
-      sendAll(connection, response(200, "OK", contentType(file), body.str(), method == "GET"));
-    }
-  }
+  if (method != "GET" && method != "HEAD") return response(405, "Method Not Allowed", "text/plain", "only GET and HEAD\n", true);
+  if (!decodeTarget(target, relative)) return response(403, "Forbidden", "text/plain", "outside the viewer folder\n", method == "GET");
+  const std::filesystem::path file = root / relative;
+  std::ifstream in(file, std::ios::binary);
+  if (!std::filesystem::is_regular_file(file) || !in)
+    return response(404, "Not Found", "text/plain", "not found: " + relative + "\n", method == "GET");
+  std::ostringstream body;
+  body << in.rdbuf();
+  return response(200, "OK", contentType(file), body.str(), method == "GET");
+}
+
+void StaticFileServer::serveOne() {
+  const int connection = ::accept(socket_, nullptr, nullptr);
+  if (connection < 0) return;
+  sendAll(connection, staticFileResponse(root_, readRequestHead(connection)));
   ::close(connection);
 }
 

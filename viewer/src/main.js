@@ -19,6 +19,7 @@ import { createPalmTrace } from './palm_trace.js';
 import { createObjectPanel } from './object_panel.js';
 import { createCollisionHighlight } from './collision_highlight.js';
 import { stateFromUrl, writeStateToUrl } from './url_state.js';
+import { startLiveGlove } from './live_glove.js';
 
 const api = { ready: false, error: null };
 window.pmdplanViewer = api;
@@ -68,6 +69,7 @@ function describe(data, notes) {
   byId('subtitle').textContent = timing
     ? `timed trajectory: ${timing.duration.toFixed(3)} s, ${data.path.states.length} points, blend tolerance ${timing.blend_tolerance} rad`
     : `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
+  if (data.live) byId('subtitle').textContent = `live: ${data.live.source}`;
   const lines = [
     `path: ${data.sources.path_file} (${data.path.planner}, seed ${data.path.seed})`,
     `task: ${data.task.name} (${data.sources.task_file})${data.task.description ? ' · ' + data.task.description : ''}`,
@@ -103,10 +105,12 @@ function start(data) {
 
   let explorerPosture = null;
   let player = null;
+  let live = null;
   const readout = data.synergies ? createSynergyReadout(data.synergies) : null;
   function pose(state) {
     robot.setConfiguration(states[state]);
     if (explorerPosture) explorerPosture.joints.forEach((name, j) => robot.setJoint(name, explorerPosture.values[j]));
+    if (live) live.reapply();
     robot.object.updateMatrixWorld(true);
     jointTable.update();
     if (readout) readout.show(state);
@@ -212,6 +216,10 @@ function start(data) {
     jointValue: (name) => robot.jointValue(name),
     synergyReadout: () => (readout ? readout.current(player.state) : null),
   }));
+  if (data.live) {
+    live = startLiveGlove(data.live, { robot, view, jointTable });
+    api.live = live.status;
+  }
   const waitForFirstFrame = () => {
     if (view.renderCount > 0) api.ready = true;
     else requestAnimationFrame(waitForFirstFrame);

@@ -3,8 +3,16 @@
 // HEAD of the folder's files, one request per connection, nothing outside the folder. Enough for
 // a browser on the same machine; not meant to face a network.
 #include <filesystem>
+#include <string>
 
 namespace pmdplan {
+
+/// Reads a request's head from a connected socket (at most 16 KiB, waiting at most 5 s).
+std::string readRequestHead(int connection);
+/// The path a GET request asks for ("/events" of "GET /events?x HTTP/1.1"), empty for others.
+std::string requestTarget(const std::string& request);
+/// The whole HTTP response to `request` from the files of `root` (the rules above).
+std::string staticFileResponse(const std::filesystem::path& root, const std::string& request);
 
 class StaticFileServer {
 public:

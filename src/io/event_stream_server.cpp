@@ -1,0 +1,122 @@
+#include "pmdplan/io/event_stream_server.hpp"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/io/static_file_server.hpp"
+
+namespace pmdplan {
+namespace {
+
+/// Sends all of `bytes` without waiting on a full socket; false if the peer cannot take them.
+bool sendNow(int connection, const std::string& bytes) {
+  std::size_t sent = 0;
+  while (sent < bytes.size()) {
+    const ssize_t n = ::send(connection, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    sent += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// Blocking send for the static files (a page's script is larger than a socket buffer).
+void sendAll(int connection, const std::string& bytes) {
+  std::size_t sent = 0;
+  while (sent < bytes.size()) {
+    const ssize_t n = ::send(connection, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    sent += static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace
+
+EventStreamServer::EventStreamServer(std::filesystem::path root, int port) : root_(std::move(root)) {
+  if (port < 0 || port > 65535) throw InputError("", "--serve", "expected a port number 0-65535 (0: any free port)");
+  socket_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (socket_ < 0) throw InputError("", "--serve", std::string("cannot open a socket: ") + std::strerror(errno));
+  const int yes = 1;
+  ::setsockopt(socket_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  if (::bind(socket_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(socket_, 16) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::close(socket_);
+    throw InputError("", "--serve", "cannot listen on 127.0.0.1:" + std::to_string(port) + " (" + reason +
+                                        "); pick another port, or 0 for any free one");
+  }
+  socklen_t length = sizeof address;
+  ::getsockname(socket_, reinterpret_cast<sockaddr*>(&address), &length);
+  port_ = ntohs(address.sin_port);
+  thread_ = std::thread([this] { acceptLoop(); });
+}
+
+EventStreamServer::~EventStreamServer() {
+  stopping_ = true;
+  if (thread_.joinable()) thread_.join();
+  ::close(socket_);
+  const std::lock_guard lock(mutex_);
+  for (const int connection : subscribers_) ::close(connection);
+}
+
+void EventStreamServer::acceptLoop() {
+  while (!stopping_) {
+    pollfd watch{socket_, POLLIN, 0};
+    if (::poll(&watch, 1, 100) <= 0) continue;
+    const int connection = ::accept4(socket_, nullptr, nullptr, SOCK_CLOEXEC);
+    if (connection >= 0) answer(connection);
+  }
+}
+
+void EventStreamServer::answer(int connection) {
+  const std::string request = readRequestHead(connection);
+  if (requestTarget(request) != "/events") {
+    sendAll(connection, staticFileResponse(root_, request));
+    ::close(connection);
+    return;
+  }
+  const int yes = 1;
+  ::setsockopt(connection, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+  const std::lock_guard lock(mutex_);
+  const std::string head =
+      "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nCache-Control: no-store\r\nConnection: keep-alive\r\n\r\n"
+      "retry: 1000\n\n" + last_;
+  if (!sendNow(connection, head)) {
+    ::close(connection);
+    return;
+  }
+  subscribers_.push_back(connection);
+}
+
+void EventStreamServer::publish(const std::string& event, const std::string& data) {
+  const std::string message = "event: " + event + "\ndata: " + data + "\n\n";
+  const std::lock_guard lock(mutex_);
+  last_ = message;
+  subscribers_.erase(std::remove_if(subscribers_.begin(), subscribers_.end(),
+                                    [&](int connection) {
+                                      if (sendNow(connection, message)) return false;
+                                      ::close(connection);
+                                      return true;
+                                    }),
+                     subscribers_.end());
+}
+
+int EventStreamServer::subscribers() {
+  const std::lock_guard lock(mutex_);
+  return static_cast<int>(subscribers_.size());
+}
+
+}  // namespace pmdplan
