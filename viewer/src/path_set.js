@@ -10,8 +10,8 @@ import { createRobot } from './robot_poser.js';
 import { createGhostTrail } from './ghost_trail.js';
 import { createPalmTrace } from './palm_trace.js';
 
-// Neither green nor red: those are the start and the goal.
-export const PATH_COLOURS = [0x3a6fc4, 0xe07b1a, 0x17a2a2, 0x9b4dca, 0x8a6d3b, 0xd63384];
+// Neither green nor red (the start and the goal) nor the robot's own orange.
+export const PATH_COLOURS = [0x3a6fc4, 0x9b4dca, 0x17a2a2, 0xd63384, 0x8a6d3b, 0x34495e];
 const OVERLAY_OPACITY = 0.6;
 
 const hex = (colour) => `#${colour.toString(16).padStart(6, '0')}`;
@@ -70,7 +70,9 @@ export function createPathSet(view, data, primary) {
   const members = paths.map((path, k) => {
     if (k === 0) return { path, ...primary, shown: true };
     const colour = PATH_COLOURS[k % PATH_COLOURS.length];
-    const material = new THREE.MeshStandardMaterial({ color: colour, transparent: true, opacity: OVERLAY_OPACITY, roughness: 0.7 });
+    // Behind the first robot where they coincide (the base), and not hiding one another.
+    const material = new THREE.MeshStandardMaterial({ color: colour, transparent: true, opacity: OVERLAY_OPACITY, roughness: 0.7,
+      depthWrite: false, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
     // Their mesh notes would repeat the first robot's.
     const robot = createRobot(view.scene, data.robot, data.task.base, [], () => {
       tint(robot.object, material);

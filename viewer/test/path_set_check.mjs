@@ -3,8 +3,10 @@
 // The page lists the three in a legend, warns that the third does not end at the task's goal,
 // plays them in sync with one slider (by progress: none is timed), shows each path's own state and
 // clearance, draws each path's copy of the robot and ghosts in its colour and hides a path on
-// request. Screenshots: viewer-paths.png (all three mid-motion), viewer-ends-warning.png.
+// request. Screenshots: viewer-paths.png (the canvas, all three mid-motion), viewer-paths-page.png
+// (the page with the Paths legend), viewer-ends-warning.png.
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { log, serveViewer, openViewer, hidingChange, viewerValue } from './viewer_page.mjs';
@@ -82,8 +84,9 @@ export async function checkPathSet(browser, o) {
       () => viewerValue(page, (i) => window.pmdplanViewer.setState(i), middle + 1),
       () => pathRow(page, 1).locator('input[type=checkbox]').uncheck());
     assert.ok(change > 0.002, `hiding the straight path hardly changed the image (${(100 * change).toFixed(3)} %)`);
-    log(`hiding the straight path: ${(100 * change).toFixed(2)} % of pixels; screenshot viewer-paths.png`);
     await pathRow(page, 1).locator('input[type=checkbox]').check();
+    await page.screenshot({ path: join(o.work, 'viewer-paths-page.png') });
+    log(`hiding the straight path: ${(100 * change).toFixed(2)} % of pixels; screenshots viewer-paths.png, viewer-paths-page.png`);
 
     // Play moves every path.
     await viewerValue(page, () => window.pmdplanViewer.setState(0));
@@ -91,6 +94,43 @@ export async function checkPathSet(browser, o) {
     await page.waitForFunction(() => window.pmdplanViewer.pathStates().every((state) => state > 0), null, { timeout: 20_000 });
     await page.locator('#play').click();
     assert.deepEqual(problems, [], `the paths page reported problems:\n${problems.join('\n')}`);
+    await page.close();
+  } finally {
+    server.kill('SIGTERM');
+  }
+}
+
+/// Two timed trajectories of the planned path, the second at half the speed limits: the slider
+/// runs along the longer, each shows its state at the slider's time, the shorter stays at its
+/// last state once it has finished. Screenshot: viewer-paths-timed.png.
+export async function checkTimedPathSet(browser, o) {
+  const slow = join(o.work, 'paths-slow.trajectory.json');
+  execFileSync(o.cli, ['time', o.path, '-o', slow, '--velocity-scale', '0.5', '--acceleration-scale', '0.5']);
+  const { server, url } = await serveViewer(o.cli, [o.trajectory, slow], resolve(o.work, 'paths-timed-viewer'));
+  try {
+    const { page, problems } = await openViewer(browser, url);
+    const times = await viewerValue(page, () => [window.pmdplanViewerData.path.timing.times,
+      window.pmdplanViewerData.overlay_paths[0].timing.times]);
+    const [fast, slower] = times;
+    // Half the limits: sqrt(2) times as long where the accelerations bind, twice where the velocities do.
+    assert.ok(slower[slower.length - 1] > 1.3 * fast[fast.length - 1], 'half the limits: a longer trajectory');
+    const count = await viewerValue(page, () => window.pmdplanViewer.stateCount);
+    assert.equal(count, slower.length, 'the slider runs along the longer trajectory');
+    assert.ok((await page.locator('#path-sync').innerText()).includes('by time'), 'the legend says the paths play by time');
+    const atOrBefore = (list, t) => list.reduce((last, time, j) => (time <= t ? j : last), 0);
+    for (const i of [0, Math.floor(count / 4), Math.floor(count / 2), Math.floor((3 * count) / 4), count - 1]) {
+      await viewerValue(page, (index) => window.pmdplanViewer.setState(index), i);
+      const states = await viewerValue(page, () => window.pmdplanViewer.pathStates());
+      assert.deepEqual(states, [atOrBefore(fast, slower[i]), i], `at ${slower[i]} s`);
+    }
+    assert.equal(atOrBefore(fast, slower[count - 1]), fast.length - 1, 'the shorter one ends at its last state');
+    const label = await page.locator('#state-label').innerText();
+    assert.ok(label.includes(`of ${slower[count - 1].toFixed(2)} s`), `the clock is the longer trajectory's: ${label}`);
+    await viewerValue(page, (index) => window.pmdplanViewer.setState(index), Math.floor(count / 3));
+    await page.waitForFunction(() => window.pmdplanViewer.renderCount > 0);
+    await page.screenshot({ path: join(o.work, 'viewer-paths-timed.png') });
+    log(`timed paths of ${fast[fast.length - 1].toFixed(3)} s and ${slower[slower.length - 1].toFixed(3)} s in sync by time; screenshot viewer-paths-timed.png`);
+    assert.deepEqual(problems, [], `the timed paths page reported problems:\n${problems.join('\n')}`);
     await page.close();
   } finally {
     server.kill('SIGTERM');

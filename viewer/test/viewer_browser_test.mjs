@@ -3,7 +3,8 @@
 // the canvas is not blank, moving the slider changes a finger joint and the image, the coupled
 // distal joint follows, keys step, the synergy readout and explorer work, play advances. The
 // page also has to work opened straight from the disk (file://). With --trajectory, the timed
-// trajectory of the same path plays in real time with its joint plots. Screenshots go to --work.
+// trajectory of the same path plays in real time with its joint plots. Several paths on one page
+// (path_set_check.mjs) play in sync, by progress, or by time for trajectories. Screenshots go to --work.
 //
 //   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR [--trajectory T.json]
 import assert from 'node:assert/strict';
@@ -13,7 +14,7 @@ import { pathToFileURL } from 'node:url';
 import { launchChromium } from './chromium.mjs';
 import { decodePng, imageContent, changedShare } from './png_image.mjs';
 import { log, elapsed, serveViewer, openViewer, canvasAfterRender, hidingChange, renderCount, viewerValue } from './viewer_page.mjs';
-import { checkPathSet } from './path_set_check.mjs';
+import { checkPathSet, checkTimedPathSet } from './path_set_check.mjs';
 
 function options() {
   const args = process.argv.slice(2);
@@ -258,7 +259,10 @@ async function main() {
     log('viewer ready from file://');
     await checkCollisions(browser, o);
     await checkPathSet(browser, o);
-    if (o.trajectory) await checkTrajectory(browser, o);
+    if (o.trajectory) {
+      await checkTrajectory(browser, o);
+      await checkTimedPathSet(browser, o);
+    }
   } finally {
     await browser.close();
     server.kill('SIGTERM');
