@@ -114,10 +114,10 @@ export function createPathSet(view, data, primary) {
         view.requestRender();
       });
       const swatch = element('span', { class: 'swatch', style: `background:${hex(PATH_COLOURS[k % PATH_COLOURS.length])}` });
-      const cell = element('td', { class: 'path-state' });
+      const cell = element('div', { class: 'path-state' });
       cells.push(cell);
       table.append(element('tr', { 'data-path': String(k) }, element('td', {}, box), element('td', {}, swatch),
-        element('td', { class: 'path-name' }, member.path.name, k === 0 ? ' (solid)' : ''), cell));
+        element('td', { class: 'path-name' }, member.path.name, k === 0 ? ' (solid)' : '', cell)));
     });
     const sync = timeline.timed
       ? 'One slider plays every path by time (all are timed trajectories).'
