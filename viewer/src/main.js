@@ -106,7 +106,7 @@ function start(data) {
   const ghosts = createGhostTrail(view.scene, robot, pathColour(data, 0));
   const trace = createPalmTrace(view.scene, robot, pathColour(data, 0));
   // Several paths: one slider over the longest; `shown()` is the first path's state at it.
-  const paths = createPathSet(view, data, { robot, ghosts, trace });
+  const paths = createPathSet(view, data, { robot, ghosts, trace }, () => writeStateToUrl(player.state, paths.hidden()));
   const shown = () => paths.stateOf(0, player.state);
   const states = data.path.states;
   const plots = createJointPlots(data.path, data.robot);
@@ -125,7 +125,7 @@ function start(data) {
     if (plots) plots.show(state);
     highlight.show(state);
     paths.show(position);
-    writeStateToUrl(position);
+    writeStateToUrl(position, paths.hidden());
   }
   let explorer = null;
   if (data.synergies) {
@@ -189,6 +189,7 @@ function start(data) {
 
   const traceToggle = byId('show-palm-trace');
   const tracePoints = trace.rebuild(states, states[0]);
+  paths.setTracesVisible(traceToggle.checked);
   traceToggle.addEventListener('change', () => {
     paths.setTracesVisible(traceToggle.checked);
     view.requestRender();

@@ -9,6 +9,7 @@ import { byId, element } from './dom.js';
 import { createRobot } from './robot_poser.js';
 import { createGhostTrail } from './ghost_trail.js';
 import { createPalmTrace } from './palm_trace.js';
+import { hiddenPathsFromUrl } from './url_state.js';
 
 // Neither green nor red (the start and the goal) nor the robot's own orange.
 export const PATH_COLOURS = [0x3a6fc4, 0x9b4dca, 0x17a2a2, 0xd63384, 0x8a6d3b, 0x34495e];
@@ -63,8 +64,9 @@ function clearanceText(path, state) {
   return links.length ? `in collision: ${links.join(', ')}` : `clearance ${(1000 * path.clearance[state]).toFixed(1)} mm`;
 }
 
-/// `primary`: the first path's {robot, ghosts, trace}, made by the page.
-export function createPathSet(view, data, primary) {
+/// `primary`: the first path's {robot, ghosts, trace}, made by the page; `onVisibility` is called
+/// when a path is shown or hidden. Paths the address hides start hidden.
+export function createPathSet(view, data, primary, onVisibility = () => {}) {
   const paths = [data.path, ...(data.overlay_paths || [])];
   const timeline = syncTimeline(paths);
   const members = paths.map((path, k) => {
@@ -105,12 +107,16 @@ export function createPathSet(view, data, primary) {
   panel.hidden = paths.length < 2;
   if (paths.length > 1) {
     const table = byId('path-table');
+    const hidden = hiddenPathsFromUrl();
     members.forEach((member, k) => {
       const box = element('input', { type: 'checkbox', title: `show ${member.path.name}` });
-      box.checked = true;
+      member.shown = !hidden.includes(k);
+      box.checked = member.shown;
+      applyVisibility(member);
       box.addEventListener('change', () => {
         member.shown = box.checked;
         applyVisibility(member);
+        onVisibility();
         view.requestRender();
       });
       const swatch = element('span', { class: 'swatch', style: `background:${hex(PATH_COLOURS[k % PATH_COLOURS.length])}` });
@@ -147,6 +153,7 @@ export function createPathSet(view, data, primary) {
       });
     },
     ghostCounts: () => members.map((member) => member.ghostCount ?? null),
+    hidden: () => members.flatMap((member, k) => (member.shown ? [] : [k])),
     setTracesVisible(on) {
       tracesOn = on;
       members.forEach(applyVisibility);

@@ -84,7 +84,14 @@ export async function checkPathSet(browser, o) {
       () => viewerValue(page, (i) => window.pmdplanViewer.setState(i), middle + 1),
       () => pathRow(page, 1).locator('input[type=checkbox]').uncheck());
     assert.ok(change > 0.002, `hiding the straight path hardly changed the image (${(100 * change).toFixed(3)} %)`);
+    // The hidden path is in the address: a reload keeps it hidden.
+    assert.ok((await viewerValue(page, () => window.location.hash)).endsWith('&hide=1'), 'the hidden path is in the URL');
+    await page.reload();
+    await page.waitForFunction(() => window.pmdplanViewer && window.pmdplanViewer.ready, null, { timeout: 60_000 });
+    assert.equal(await pathRow(page, 1).locator('input[type=checkbox]').isChecked(), false, 'a reload keeps the path hidden');
+    assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), middle + 1, 'and the state');
     await pathRow(page, 1).locator('input[type=checkbox]').check();
+    assert.ok(!(await viewerValue(page, () => window.location.hash)).includes('hide'), 'shown again: gone from the URL');
     await page.screenshot({ path: join(o.work, 'viewer-paths-page.png') });
     log(`hiding the straight path: ${(100 * change).toFixed(2)} % of pixels; screenshots viewer-paths.png, viewer-paths-page.png`);
 
