@@ -1,6 +1,6 @@
 // `pmdplan view` of several paths at once: files of one task side by side in the viewer data (the
 // first as `path`, the others as `overlay_paths`, each named, warnings prefixed with their file),
-// paths of different tasks refused (exit 2 naming the file), and a bench folder's paths of one
+// paths of different tasks or robots refused (exit 2 naming the file), and a bench folder's paths of one
 // seed, written by `pmdplan bench --paths`, opened with `view DIR --seed N`.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -106,7 +106,7 @@ TEST_F(ViewPathsCli, TwoPathsOfOneTaskAreBothInTheViewerData) {
   EXPECT_FALSE(one["path"].contains("name"));
 }
 
-TEST_F(ViewPathsCli, PathsOfDifferentTasksAreRefusedNamingTheFile) {
+TEST_F(ViewPathsCli, PathsOfDifferentTasksOrRobotsAreRefusedNamingTheFile) {
   const auto a = dir_.path() / "table.json", b = dir_.path() / "clutter.json";
   writePathFile(a, straightPath(task(), 3, "pmd"));
   writePathFile(b, straightPath(loadTaskByName("t_in_clutter"), 3, "pmd"));
@@ -118,6 +118,17 @@ TEST_F(ViewPathsCli, PathsOfDifferentTasksAreRefusedNamingTheFile) {
   EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written";
   // --task does not make them one task either.
   EXPECT_EQ(runCli("view " + quoted(a) + " " + quoted(b) + " --task can_on_table --out " + quoted(out)).exitCode, 2);
+
+  // Of the task's name but not of its robot (other joints): refused, naming that file.
+  PathFile otherRobot = straightPath(task(), 3, "pmd");
+  otherRobot.jointNames[2] = "elbow";
+  const auto c = dir_.path() / "other-robot.json";
+  writePathFile(c, otherRobot);
+  const auto robot = runCli("view " + quoted(a) + " " + quoted(c) + " --out " + quoted(out));
+  EXPECT_EQ(robot.exitCode, 2);
+  EXPECT_THAT(robot.err, HasSubstr("pmdplan: error: " + c.string() + ": joint_names: expected the 19 active joints of robot 'sah_tx90'"));
+  EXPECT_THAT(robot.err, HasSubstr("not joints of the robot: elbow"));
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 TEST_F(ViewPathsCli, ABenchFoldersPathsOfOneSeedOpenTogetherPmdFirst) {
