@@ -1,7 +1,8 @@
 // `pmdplan bench [TASK...]`: planners side by side on the same tasks with the same checks: every
 // run's CSV row, the Markdown tables (also printed), an OMPL benchmark log and a box plot of the
-// planning times. Under `mpirun -np P` the runs are split across the ranks and rank 0 writes the
-// outputs; with --report nothing is run and they are written from a journal's finished runs.
+// planning times, and with --paths each solved run's path. Under `mpirun -np P` the runs are split
+// across the ranks and rank 0 writes the outputs; with --report nothing is run and they are
+// written from a journal's finished runs.
 // Exit 0 done (whatever the runs' outcomes unless --require), 1 a --require planner failed a run,
 // 2 bad input.
 #include <unistd.h>
@@ -40,7 +41,7 @@ struct CommandLine {
   std::optional<double> grace;  // unset: max(60 s, time limit)
   std::string checker = "fast";
   double toleranceMm = 1.0;
-  std::string synergies, csv, markdown, omplLog, plot, journal;
+  std::string synergies, csv, markdown, omplLog, plot, journal, paths;
   std::string require;  // planners every run of which must succeed, else exit 1
   bool report = false;
 };
@@ -65,6 +66,7 @@ BenchOptions benchOptions(const CommandLine& c) {
   o.omplLog = c.omplLog;
   o.plot = c.plot;
   o.journal = c.journal;
+  o.paths = c.paths;
   o.reportOnly = c.report;
   checkBenchOptions(o);
   for (const std::string& name : splitList(c.require))
@@ -185,6 +187,7 @@ const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seede
   app.add_option("--markdown", c->markdown, "Write the tables as Markdown");
   app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
   app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
+  app.add_option("--paths", c->paths, "Write each solved run's path to this folder as TASK.PLANNER.seedN.path.json (pmdplan view DIR --seed N)");
   addPlannerSettingOptions(app, c->settings, "First seed S, >= 1: run i uses seed S + i");
   app.add_option("--journal", c->journal, "Keep finished runs in this folder as they finish; the same command again resumes there");
   app.add_flag("--report", c->report, "Run nothing: write the outputs from the --journal's finished runs (a campaign part way)");

@@ -5,6 +5,7 @@
 #include "pmdplan/bench/human_likeness.hpp"
 #include "pmdplan/bench/ompl_planning.hpp"
 #include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/io/robot_mimic.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
@@ -12,7 +13,16 @@
 namespace pmdplan {
 namespace {
 
-RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record, const PlannerParameters& parameters) {
+void keepPath(const TaskBench& bench, const RunRecord& record, const std::vector<Configuration>& points,
+              std::optional<std::size_t> closingFrom, const PlanningStatistics& statistics, PathFile* path) {
+  if (!path) return;
+  const Task& task = bench.task();
+  *path = PathFile{task.name, record.planner, record.seed, task.robot->activeJointNames(), points, closingFrom,
+                   mimicRelations(*task.robot), statistics};
+}
+
+RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record, const PlannerParameters& parameters,
+                        PathFile* path) {
   TaskPlanningOptions options;
   options.mode = planner.mode;
   options.parameters = parameters;
@@ -29,12 +39,16 @@ RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord
   record.nodesByHandDimension = s.nodesByHandDimension;
   record.roadmapNodes = s.roadmapNodes;
   record.collisionChecks = s.collisionChecks();
-  if (record.solved) assessPath(bench, result.path, record, result.closingFrom);
-  else record.failure = "not solved: " + plannerStatusName(s.status);
+  if (record.solved) {
+    assessPath(bench, result.path, record, result.closingFrom);
+    keepPath(bench, record, result.path, result.closingFrom, s, path);
+  } else {
+    record.failure = "not solved: " + plannerStatusName(s.status);
+  }
   return record;
 }
 
-RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord record, double timeLimitSeconds) {
+RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord record, double timeLimitSeconds, PathFile* path) {
   const Task& task = bench.task();
   MotionValidator& motions = bench.checking().motions();
   const OmplPlanningResult result = planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions,
@@ -54,19 +68,21 @@ RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord recor
   record.smoothingTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   record.collisionChecks += motions.statesChecked() - motionChecksBefore;
   assessPath(bench, smoothed, record);
+  keepPath(bench, record, smoothed, std::nullopt, PlanningStatistics{}, path);
   return record;
 }
 
 }  // namespace
 
-RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters) {
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters,
+                         PathFile* path) {
   RunRecord record;
   record.task = bench.task().name;
   record.planner = planner.name;
   record.run = run;
   record.seed = parameters.seed;
-  return planner.family == PlannerFamily::Ompl ? runOmpl(bench, planner, record, parameters.timeLimit)
-                                               : runPmdRoadmap(bench, planner, record, parameters);
+  return planner.family == PlannerFamily::Ompl ? runOmpl(bench, planner, record, parameters.timeLimit, path)
+                                               : runPmdRoadmap(bench, planner, record, parameters, path);
 }
 
 void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record,

@@ -14,6 +14,8 @@
 #include "pmdplan/bench/task_bench.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/io/path_set.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 
 namespace pmdplan {
@@ -58,6 +60,7 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
     if (!entry) throw InputError("", "--planners", "'" + name + "' is not a planner; known planners: " + knownPlannerNames());
     planners.push_back(*entry);
   }
+  if (!options.paths.empty()) createOutputFolder(options.paths, "--paths");
   std::vector<RunRecord> records;
   for (const std::size_t index : jobIndices) {
     if (const RunRecord* done = journal ? journal->find(index) : nullptr) {
@@ -74,7 +77,14 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
     parameters.timeLimit = options.timeLimit;
     const auto began = std::chrono::steady_clock::now();
     const ChildOutcome outcome = runInChildProcess(
-        [&] { return encodeRunRecord(runPlannerOnce(*bench, planner, job.run, parameters)); },
+        [&] {
+          // The child writes the path itself: only the record travels back.
+          PathFile path;
+          const RunRecord run = runPlannerOnce(*bench, planner, job.run, parameters, options.paths.empty() ? nullptr : &path);
+          if (!path.points.empty())
+            writePathFile(options.paths / benchPathFileName(run.task, run.planner, run.seed), path);
+          return encodeRunRecord(run);
+        },
         options.timeLimit + options.graceSeconds);
     std::optional<RunRecord> record;
     if (outcome.finished()) record = decodeRunRecord(outcome.output);

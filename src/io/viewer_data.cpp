@@ -183,24 +183,53 @@ PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory) {
   return path;
 }
 
+ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesystem::path& pathFile,
+                      const ViewerDataParameters& parameters) {
+  const RobotModel& robot = *task.robot;
+  const std::vector<Configuration> waypoints = pathConfigurations(path, robot, pathFile.string());
+  ViewerPath result;
+  Json timing;
+  if (parameters.trajectory) {
+    result.timeline = trajectoryTimeline(*parameters.trajectory, robot, waypoints, pathFile.string());
+    timing = trajectoryTimingJson(*parameters.trajectory);
+  } else {
+    result.timeline = pathTimeline(waypoints, robot, parameters.timeline);
+  }
+  Json states = Json::array();
+  for (const Configuration& state : result.timeline.states) states.push_back(numbers(state));
+  result.json = Json{{"planner", path.planner},
+                     {"seed", path.seed},
+                     {"statistics", statisticsToJson(path.statistics, false)},
+                     {"waypoint_count", waypoints.size()},
+                     {"state_spacing", parameters.timeline.stateSpacing},
+                     {"states", std::move(states)},
+                     {"waypoint_states", result.timeline.waypointStates},
+                     {"timing", std::move(timing)}};
+  result.warnings = pathEndWarnings(task, waypoints);
+  Json clearance = Json::array(), colliding = Json::array();
+  try {
+    for (const StateClearance& state : stateClearances(task, result.timeline.states)) {
+      clearance.push_back(state.clearance);
+      colliding.push_back(state.collidingLinks);
+    }
+  } catch (const InputError& error) {
+    // Geometry the checker cannot load (an empty mesh, ...): the page still shows the path.
+    clearance = colliding = Json();
+    result.warnings.push_back("no collisions or clearance shown: " + error.file() + ": " + error.message());
+  }
+  result.json["clearance"] = std::move(clearance);
+  result.json["colliding_links"] = std::move(colliding);
+  return result;
+}
+
 ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies, const ViewerSources& sources,
                       const ViewerDataParameters& parameters) {
   const RobotModel& robot = *task.robot;
-  const std::vector<Configuration> waypoints = pathConfigurations(path, robot, sources.pathFile.string());
+  ViewerPath shown = viewerPath(task, path, sources.pathFile, parameters);
   const std::vector<int> slots =
       synergies ? modelJointSlots(*synergies, robot, sources.synergyFile.string()) : std::vector<int>{};
-  PathTimeline timeline;
-  Json timing;
-  if (parameters.trajectory) {
-    timeline = trajectoryTimeline(*parameters.trajectory, robot, waypoints, sources.pathFile.string());
-    timing = trajectoryTimingJson(*parameters.trajectory);
-  } else {
-    timeline = pathTimeline(waypoints, robot, parameters.timeline);
-  }
 
   ViewerData data;
-  Json states = Json::array();
-  for (const Configuration& state : timeline.states) states.push_back(numbers(state));
   Json& document = data.document;
   document["format"] = "pmdplan-viewer-data";
   document["version"] = 1;
@@ -210,30 +239,9 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
                              {"synergy_file", synergies ? Json(sources.synergyFile.filename().string()) : Json()}};
   document["task"] = taskJson(task, data.files);
   document["robot"] = robotJson(robot, data.files);
-  document["path"] = Json{{"planner", path.planner},
-                          {"seed", path.seed},
-                          {"statistics", statisticsToJson(path.statistics, false)},
-                          {"waypoint_count", waypoints.size()},
-                          {"state_spacing", parameters.timeline.stateSpacing},
-                          {"states", std::move(states)},
-                          {"waypoint_states", timeline.waypointStates},
-                          {"timing", std::move(timing)}};
-  std::vector<std::string> warnings = pathEndWarnings(task, waypoints);
-  Json clearance = Json::array(), colliding = Json::array();
-  try {
-    for (const StateClearance& state : stateClearances(task, timeline.states)) {
-      clearance.push_back(state.clearance);
-      colliding.push_back(state.collidingLinks);
-    }
-  } catch (const InputError& error) {
-    // Geometry the checker cannot load (an empty mesh, ...): the page still shows the path.
-    clearance = colliding = Json();
-    warnings.push_back("no collisions or clearance shown: " + error.file() + ": " + error.message());
-  }
-  document["warnings"] = std::move(warnings);
-  document["path"]["clearance"] = std::move(clearance);
-  document["path"]["colliding_links"] = std::move(colliding);
-  document["synergies"] = synergies ? synergiesJson(*synergies, slots, timeline, parameters.plannerDirections) : Json();
+  document["path"] = std::move(shown.json);
+  document["warnings"] = std::move(shown.warnings);
+  document["synergies"] = synergies ? synergiesJson(*synergies, slots, shown.timeline, parameters.plannerDirections) : Json();
   return data;
 }
 

@@ -1,13 +1,14 @@
 // Translucent copies of the robot (or its hand) at every N-th path state: the shape of the whole
-// motion at a glance. Copies share the robot's geometry and are frozen at their world pose.
+// motion at a glance. Copies share the robot's geometry and are frozen at their world pose. A
+// page of several paths gives each path's trail the path's colour.
 import * as THREE from 'three';
 
-export function createGhostTrail(scene, robot) {
+export function createGhostTrail(scene, robot, colour = 0x5a7bb5) {
   const group = new THREE.Group();
   group.name = 'ghost trail';
   scene.add(group);
   const material = new THREE.MeshStandardMaterial({
-    color: 0x5a7bb5, transparent: true, opacity: 0.18, depthWrite: false, roughness: 0.9,
+    color: colour, transparent: true, opacity: 0.18, depthWrite: false, roughness: 0.9,
   });
   return {
     group,

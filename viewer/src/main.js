@@ -20,6 +20,7 @@ import { createObjectPanel } from './object_panel.js';
 import { createCollisionHighlight } from './collision_highlight.js';
 import { stateFromUrl, writeStateToUrl } from './url_state.js';
 import { startLiveGlove } from './live_glove.js';
+import { createPathSet, pathColour, syncTimeline } from './path_set.js';
 
 const api = { ready: false, error: null };
 window.pmdplanViewer = api;
@@ -41,11 +42,16 @@ function checkData(data) {
   if (data.format !== 'pmdplan-viewer-data' || data.version !== 1)
     throw new Error(`viewer-data.js: expected format pmdplan-viewer-data version 1, found ${data.format} ${data.version}`);
   const joints = data.robot.joint_names.length;
-  data.path.states.forEach((state, i) => {
-    if (state.length !== joints) throw new Error(`viewer-data.js: path.states[${i}] has ${state.length} values for ${joints} joints`);
+  allPaths(data).forEach((path, k) => {
+    const key = k === 0 ? 'path' : `overlay_paths[${k - 1}]`;
+    path.states.forEach((state, i) => {
+      if (state.length !== joints) throw new Error(`viewer-data.js: ${key}.states[${i}] has ${state.length} values for ${joints} joints`);
+    });
+    if (path.states.length === 0) throw new Error(`viewer-data.js: ${key} has no states`);
   });
-  if (data.path.states.length === 0) throw new Error('viewer-data.js: the path has no states');
 }
+
+const allPaths = (data) => [data.path, ...(data.overlay_paths || [])];
 
 function sceneBox(robot, data, obstacles) {
   const box = new THREE.Box3();
@@ -71,7 +77,8 @@ function describe(data, notes) {
     : `${data.path.waypoint_count} waypoints, ${data.path.states.length} states${statistics}`;
   if (data.live) byId('subtitle').textContent = `live: ${data.live.source}`;
   const lines = [
-    `path: ${data.sources.path_file} (${data.path.planner}, seed ${data.path.seed})`,
+    ...(data.overlay_paths ? allPaths(data).map((path) => `path: ${path.name}`)
+      : [`path: ${data.sources.path_file} (${data.path.planner}, seed ${data.path.seed})`]),
     `task: ${data.task.name} (${data.sources.task_file})${data.task.description ? ' · ' + data.task.description : ''}`,
     `robot: ${data.robot.name}`,
     data.synergies ? `synergies: ${data.sources.synergy_file} · ${data.synergies.provenance}` : 'no synergy model',
@@ -84,7 +91,7 @@ function describe(data, notes) {
 function start(data) {
   checkData(data);
   showPathWarnings(data.warnings);
-  const initialState = stateFromUrl(data.path.states.length) ?? 0;  // before anything poses (and rewrites it)
+  const initialState = stateFromUrl(syncTimeline(allPaths(data)).leaderPath.states.length) ?? 0;  // before anything poses (and rewrites it)
   const notes = [];
   const view = createSceneView(byId('view'));
   const obstacles = addObstacles(view.scene, data.task, notes, () => {
@@ -98,7 +105,11 @@ function start(data) {
   });
   api.robotMeshes = () => robot.meshStatus();
   const jointTable = createJointTable(byId('joint-table'), data.robot, robot);
-  const ghosts = createGhostTrail(view.scene, robot);
+  const ghosts = createGhostTrail(view.scene, robot, pathColour(data, 0));
+  const trace = createPalmTrace(view.scene, robot, pathColour(data, 0));
+  // Several paths: one slider over the longest; `shown()` is the first path's state at it.
+  const paths = createPathSet(view, data, { robot, ghosts, trace }, () => writeStateToUrl(player.state, paths.hidden()));
+  const shown = () => paths.stateOf(0, player.state);
   const states = data.path.states;
   const plots = createJointPlots(data.path, data.robot);
   const highlight = createCollisionHighlight(robot.object, data.path);
@@ -107,7 +118,8 @@ function start(data) {
   let player = null;
   let live = null;
   const readout = data.synergies ? createSynergyReadout(data.synergies) : null;
-  function pose(state) {
+  function pose(position) {
+    const state = paths.stateOf(0, position);
     robot.setConfiguration(states[state]);
     if (explorerPosture) explorerPosture.joints.forEach((name, j) => robot.setJoint(name, explorerPosture.values[j]));
     if (live) live.reapply();
@@ -116,7 +128,8 @@ function start(data) {
     if (readout) readout.show(state);
     if (plots) plots.show(state);
     highlight.show(state);
-    writeStateToUrl(state);
+    paths.show(position);
+    writeStateToUrl(position, paths.hidden());
   }
   let explorer = null;
   if (data.synergies) {
@@ -127,7 +140,7 @@ function start(data) {
       view.requestRender();
     });
     byId('explorer-from-path').addEventListener('click', () => {
-      const current = readout.current(player.state);
+      const current = readout.current(shown());
       byId('explore').checked = true;
       explorer.setFrom(current.ownAxis, current.coefficients);
     });
@@ -136,7 +149,7 @@ function start(data) {
     byId('explorer-panel').hidden = true;
   }
   const box = sceneBox(robot, data, obstacles);
-  player = createPathPlayer(data.path, view, pose);
+  player = createPathPlayer(paths.timelinePath, view, pose);
 
   const ghostMode = byId('ghost-mode');
   const ghostEvery = byId('ghost-every');
@@ -146,7 +159,8 @@ function start(data) {
     const spacing = ghostSpacing(ghostEvery.value, states.length);
     ghostEvery.value = String(spacing.every);
     byId('ghost-note').textContent = spacing.note;
-    ghostCount = ghosts.rebuild(states, spacing.every, ghostMode.value, states[player.state]);
+    ghostCount = ghosts.rebuild(states, spacing.every, ghostMode.value, states[shown()]);
+    paths.rebuildGhosts(spacing.every, ghostMode.value);
     pose(player.state);
     view.requestRender();
   };
@@ -169,7 +183,7 @@ function start(data) {
   const endsToggle = byId('show-ends');
   let endCopies = 0;
   const rebuildEnds = () => {
-    endCopies = ends.rebuild(states, ghostMode.value === 'hand', states[player.state]);
+    endCopies = ends.rebuild(states, ghostMode.value === 'hand', states[shown()]);
     ends.setVisible(endsToggle.checked);
     pose(player.state);
     view.requestRender();
@@ -177,11 +191,11 @@ function start(data) {
   endsToggle.addEventListener('change', rebuildEnds);
   ghostMode.addEventListener('change', rebuildEnds);
 
-  const trace = createPalmTrace(view.scene, robot);
   const traceToggle = byId('show-palm-trace');
   const tracePoints = trace.rebuild(states, states[0]);
+  paths.setTracesVisible(traceToggle.checked);
   traceToggle.addEventListener('change', () => {
-    trace.setVisible(traceToggle.checked);
+    paths.setTracesVisible(traceToggle.checked);
     view.requestRender();
   });
 
@@ -194,8 +208,13 @@ function start(data) {
 
   // Descriptors, not Object.assign: the getters must stay live.
   Object.defineProperties(api, Object.getOwnPropertyDescriptors({
-    stateCount: states.length,
-    waypointStates: data.path.waypoint_states.slice(),
+    stateCount: paths.timelinePath.states.length,
+    waypointStates: paths.timelinePath.waypoint_states.slice(),
+    pathCount: paths.count,
+    pathNames: paths.names,
+    pathStates: () => paths.statesShown(),
+    pathStateCounts: allPaths(data).map((path) => path.states.length),
+    overlayGhostCounts: () => paths.ghostCounts(),
     jointNames: data.robot.joint_names.slice(),
     get state() { return player.state; },
     get playing() { return player.playing; },
@@ -214,7 +233,7 @@ function start(data) {
     warnings: (data.warnings || []).slice(),
     setState: (index) => player.go(index),
     jointValue: (name) => robot.jointValue(name),
-    synergyReadout: () => (readout ? readout.current(player.state) : null),
+    synergyReadout: () => (readout ? readout.current(shown()) : null),
   }));
   if (data.live) {
     live = startLiveGlove(data.live, { robot, view, jointTable });

@@ -1,10 +1,11 @@
 // The palm's path through space: a line through the palm frame's origin at every state, the
-// workspace view of the joint-space path (the arm's part of the motion at a glance).
+// workspace view of the joint-space path (the arm's part of the motion at a glance), in the
+// path's colour when the page shows several.
 import * as THREE from 'three';
 
-export function createPalmTrace(scene, robot) {
+export function createPalmTrace(scene, robot, colour = 0x7b3fa0) {
   // Drawn over everything: the palm frame's origin is inside the palm's own geometry.
-  const material = new THREE.LineBasicMaterial({ color: 0x7b3fa0, depthTest: false, transparent: true });
+  const material = new THREE.LineBasicMaterial({ color: colour, depthTest: false, transparent: true });
   let line = null;
   return {
     /// Leaves the robot at restorePositions; returns the number of points.

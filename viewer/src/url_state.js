@@ -1,5 +1,6 @@
-// The state shown, kept in the page address (#state=N), so a link or a reload opens the same
-// moment of the path. The fragment, not the query: it changes nothing a file:// page loads.
+// The state shown, kept in the page address (#state=N, and &hide=K,... for the paths hidden on a
+// page of several), so a link or a reload opens the same moment of the path. The fragment, not
+// the query: it changes nothing a file:// page loads.
 export function stateFromUrl(count) {
   const match = /(?:^#|&)state=(\d+)/.exec(window.location.hash);
   if (!match) return null;
@@ -7,7 +8,13 @@ export function stateFromUrl(count) {
   return state < count ? state : null;
 }
 
-export function writeStateToUrl(state) {
-  const hash = `#state=${state}`;
+/// The indices of the paths the address hides (none if it names none).
+export function hiddenPathsFromUrl() {
+  const match = /(?:^#|&)hide=(\d+(?:,\d+)*)/.exec(window.location.hash);
+  return match ? match[1].split(',').map(Number) : [];
+}
+
+export function writeStateToUrl(state, hiddenPaths = []) {
+  const hash = `#state=${state}${hiddenPaths.length ? `&hide=${hiddenPaths.join(',')}` : ''}`;
   if (window.location.hash !== hash) window.history.replaceState(null, '', hash);
 }

@@ -3,20 +3,18 @@
 // the canvas is not blank, moving the slider changes a finger joint and the image, the coupled
 // distal joint follows, keys step, the synergy readout and explorer work, play advances. The
 // page also has to work opened straight from the disk (file://). With --trajectory, the timed
-// trajectory of the same path plays in real time with its joint plots. Screenshots go to --work.
+// trajectory of the same path plays in real time with its joint plots. Several paths on one page
+// (path_set_check.mjs) play in sync, by progress, or by time for trajectories. Screenshots go to --work.
 //
 //   node viewer/test/viewer_browser_test.mjs --cli build/pmdplan --path PATH.json --work DIR [--trajectory T.json]
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { launchChromium } from './chromium.mjs';
 import { decodePng, imageContent, changedShare } from './png_image.mjs';
-
-const started = Date.now();
-const seconds = () => ((Date.now() - started) / 1000).toFixed(1);
-const log = (message) => console.log(`[${seconds()} s] ${message}`);
+import { log, elapsed, serveViewer, openViewer, canvasAfterRender, hidingChange, renderCount, viewerValue } from './viewer_page.mjs';
+import { checkPathSet, checkTimedPathSet } from './path_set_check.mjs';
 
 function options() {
   const args = process.argv.slice(2);
@@ -31,66 +29,6 @@ function options() {
   }
   return o;
 }
-
-/// Starts `pmdplan view --serve 0` and resolves with the process and the address it prints.
-function serveViewer(cli, path, folder) {
-  const server = spawn(cli, ['view', path, '--out', folder, '--serve', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
-  return new Promise((resolveAddress, reject) => {
-    let out = '', err = '';
-    const timer = setTimeout(() => reject(new Error(`pmdplan view printed no address within 30 s:\n${out}${err}`)), 30_000);
-    server.stdout.on('data', (chunk) => {
-      out += chunk;
-      const match = out.match(/http:\/\/127\.0\.0\.1:(\d+)\//);
-      if (match) {
-        clearTimeout(timer);
-        resolveAddress({ server, url: match[0] });
-      }
-    });
-    server.stderr.on('data', (chunk) => { err += chunk; });
-    server.on('exit', (code) => {
-      clearTimeout(timer);
-      reject(new Error(`pmdplan view exited with ${code} before serving:\n${out}${err}`));
-    });
-  });
-}
-
-async function openViewer(browser, url) {
-  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-  const problems = [];
-  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
-  page.on('console', (message) => { if (message.type() === 'error') problems.push(`console error: ${message.text()}`); });
-  page.on('requestfailed', (request) => problems.push(`request failed: ${request.url()}`));
-  await page.goto(url);
-  await page.waitForFunction(() => window.pmdplanViewer && (window.pmdplanViewer.ready || window.pmdplanViewer.error),
-    null, { timeout: 60_000 });
-  const error = await page.evaluate(() => window.pmdplanViewer.error);
-  assert.equal(error, null, `the viewer reports an error: ${error}`);
-  return { page, problems };
-}
-
-/// Waits until the page has drawn a frame after `before` frames, then shoots the canvas.
-async function canvasAfterRender(page, before) {
-  await page.waitForFunction((n) => window.pmdplanViewer.renderCount > n, before, { timeout: 20_000 });
-  const png = await page.locator('#view canvas').screenshot();
-  return { png, image: decodePng(png) };
-}
-
-/// The share of the canvas that changes when `hide` runs, after `prepare` (which must cause a
-/// frame, unless `prepared` says it is already shown); the shot before hiding goes to `file`.
-async function hidingChange(page, file, prepare, hide, prepared = false) {
-  let frames = await renderCount(page);
-  await prepare();
-  const shown = prepared ? { png: await page.locator('#view canvas').screenshot() } : await canvasAfterRender(page, frames);
-  if (prepared) shown.image = decodePng(shown.png);
-  writeFileSync(file, shown.png);
-  frames = await renderCount(page);
-  await hide();
-  const hidden = await canvasAfterRender(page, frames);
-  return changedShare(shown.image, hidden.image);
-}
-
-const renderCount = (page) => page.evaluate(() => window.pmdplanViewer.renderCount);
-const viewerValue = (page, fn, argument) => page.evaluate(fn, argument);
 
 /// The straight segment from the path's start to its goal passes through the can: along it the
 /// page draws the colliding links red and says so; the planned path shows its clearance instead.
@@ -193,6 +131,7 @@ async function main() {
     const joint = (name) => viewerValue(page, (n) => window.pmdplanViewer.jointValue(n), name);
     const startMedium = await page.evaluate(() => window.pmdplanViewer.jointValue('index_medium'));
     const startReadout = await viewerValue(page, () => window.pmdplanViewer.synergyReadout());
+    const clearanceStart = await viewerValue(page, () => window.pmdplanViewer.clearanceText());
     const middle = Math.floor(count / 2);
     let frames = await renderCount(page);
     await page.locator('#timeline').fill(String(middle));
@@ -204,6 +143,11 @@ async function main() {
     const change = changedShare(first.image, moved.image);
     assert.ok(change > 0.002, `the image hardly changed when the slider moved (${(100 * change).toFixed(3)} % of pixels)`);
     log(`slider to state ${middle}: index_medium ${startMedium.toFixed(4)} -> ${middleMedium.toFixed(4)} rad, ${(100 * change).toFixed(2)} % of pixels changed`);
+    // The clearance is the state's: another state, another figure.
+    const clearanceMiddle = await viewerValue(page, () => window.pmdplanViewer.clearanceText());
+    assert.ok(/^clearance \d+\.\d mm \(path minimum/.test(clearanceMiddle), `a clearance for the state: ${clearanceMiddle}`);
+    assert.notEqual(clearanceMiddle, clearanceStart, 'the clearance follows the state');
+    log(`clearance at the start "${clearanceStart}", at state ${middle} "${clearanceMiddle}"`);
     const jointText = await page.locator('#joint-table').innerText();
     assert.ok(jointText.includes((middleMedium * 180 / Math.PI).toFixed(1)), 'the joint table shows the current index_medium');
 
@@ -286,7 +230,8 @@ async function main() {
     await page.reload();
     await page.waitForFunction(() => window.pmdplanViewer && window.pmdplanViewer.ready, null, { timeout: 60_000 });
     assert.equal(await viewerValue(page, () => window.pmdplanViewer.state), shownState, 'a reload keeps the state from the URL');
-    log(`state ${shownState} kept in the URL across a reload`);
+    await page.screenshot({ path: join(o.work, 'viewer-url-state.png') });
+    log(`state ${shownState} kept in the URL across a reload; screenshot viewer-url-state.png`);
     // "every 0" is refused: the field gets a usable spacing back, a note says why, and the trail
     // stays at most 40 ghosts (plus the last state).
     await page.locator('#ghost-every').fill('0');
@@ -313,7 +258,11 @@ async function main() {
     assert.deepEqual(fromDisk.problems, [], `from file://:\n${fromDisk.problems.join('\n')}`);
     log('viewer ready from file://');
     await checkCollisions(browser, o);
-    if (o.trajectory) await checkTrajectory(browser, o);
+    await checkPathSet(browser, o);
+    if (o.trajectory) {
+      await checkTrajectory(browser, o);
+      await checkTimedPathSet(browser, o);
+    }
   } finally {
     await browser.close();
     server.kill('SIGTERM');
@@ -322,6 +271,6 @@ async function main() {
 }
 
 main().catch((error) => {
-  console.error(`[${seconds()} s] FAILED: ${error.stack || error}`);
+  console.error(`[${elapsed()} s] FAILED: ${error.stack || error}`);
   process.exit(1);
 });

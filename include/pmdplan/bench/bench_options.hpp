@@ -35,6 +35,10 @@ struct BenchOptions {
   std::filesystem::path synergies;
   /// Outputs (empty: not written).
   std::filesystem::path csv, markdown, omplLog, plot;
+  /// A folder (created if missing) where every solved run's smoothed path is written as it
+  /// finishes, as a path file named TASK.PLANNER.seedN.path.json (path_set.hpp), for
+  /// `pmdplan view FOLDER --seed N`. Empty: no paths written.
+  std::filesystem::path paths;
   /// A folder where finished runs are kept as they finish (campaign_journal.hpp); a campaign
   /// started again with the same folder skips them. Empty: no journal.
   std::filesystem::path journal;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pmdplan/bench/planner_roster.hpp"
+#include "pmdplan/io/path_file.hpp"
 #include "pmdplan/planning/planner_parameters.hpp"
 #include "pmdplan/bench/run_record.hpp"
 #include "pmdplan/bench/task_bench.hpp"
@@ -19,8 +20,10 @@ namespace pmdplan {
 
 /// Runs planner `planner` once (run number `run`) with the settings `parameters`: all of them for
 /// our planners, only the seed and the time limit for OMPL's. An OMPL planner sets OMPL's
-/// process-wide seed, so call this in a fresh process per run (forked_run.hpp).
-RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters);
+/// process-wide seed, so call this in a fresh process per run (forked_run.hpp). A solved run's
+/// smoothed path is put in `path` when it is not null (untouched otherwise).
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters,
+                         PathFile* path = nullptr);
 
 /// Validates the solved run's path and measures it into `record` (path nodes, length,
 /// human-likeness, valid); an invalid path sets `failure` to the validation's first problem. A

@@ -16,6 +16,8 @@
 //              (both null, with a warning, when the checker cannot load the task's geometry),
 //              timing: null, or for a timed trajectory {duration, blend_tolerance, velocity_limits,
 //                      acceleration_limits, times: [s per state], velocities: [[rad/s ...]]}}
+//   overlay_paths  only when several paths are viewed together (path_set.hpp): the second and
+//             later paths, each like `path` plus {name, file}; `path` then has a name and file too
 //   warnings  ["the path's first point is not task T's start ...", ...]: shown on the page
 //   synergies {provenance, joint_names, lower, upper, own_axis_joints, orthonormal, mean,
 //              directions: [[...]], sigma, variance_fraction (normalised units), planner_directions,
@@ -71,6 +73,19 @@ struct ViewerData {
   nlohmann::ordered_json document;
   std::vector<ViewerFolderFile> files;
 };
+
+/// One path as the viewer shows it: the document's "path" object, the warnings about it (ends
+/// that are not the task's, no clearance) and its timeline.
+struct ViewerPath {
+  nlohmann::ordered_json json;
+  std::vector<std::string> warnings;
+  PathTimeline timeline;
+};
+
+/// Checks that the path fits the task's robot (InputError naming `pathFile`, see
+/// pathConfigurations()) and builds its "path" object.
+ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesystem::path& pathFile,
+                      const ViewerDataParameters& parameters = {});
 
 /// Checks that the path and the synergy model fit the task's robot (InputError naming the path
 /// file or the model file otherwise, see pathConfigurations() and modelJointSlots()) and builds
