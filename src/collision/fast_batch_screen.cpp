@@ -39,14 +39,19 @@ template <class V>
   lanes::store(out, p.x), lanes::store(out + L, p.y), lanes::store(out + 2 * L, p.z);
 }
 
-/// pose * p lane by lane; `m` is a link's pose, [value][lane].
+/// Row r of pose * p lane by lane; `m` is a link's pose, [value][lane]. A function always inlined,
+/// not a lambda: a lambda's body is a function of its own, built for the baseline instruction set
+/// whatever the kernel it sits in, and a vector it returns to an AVX kernel comes back where the
+/// baseline ABI puts it, not where the kernel reads it (garbage lanes wherever the compiler does
+/// not inline the lambda: clang at -O1, the sanitizer build, so checks called free what collides).
+template <class V>
+[[gnu::always_inline]] inline V transformedRow(const double* m, const double* p, int r) {
+  using lanes::load;
+  return load<V>(m + (r * 3) * L) * p[0] + load<V>(m + (r * 3 + 1) * L) * p[1] + load<V>(m + (r * 3 + 2) * L) * p[2] + load<V>(m + (9 + r) * L);
+}
 template <class V>
 [[gnu::always_inline]] inline Point<V> transformed(const double* m, const double* p) {
-  using lanes::load;
-  const auto row = [&](int r) {
-    return load<V>(m + (r * 3) * L) * p[0] + load<V>(m + (r * 3 + 1) * L) * p[1] + load<V>(m + (r * 3 + 2) * L) * p[2] + load<V>(m + (9 + r) * L);
-  };
-  return {row(0), row(1), row(2)};
+  return {transformedRow<V>(m, p, 0), transformedRow<V>(m, p, 1), transformedRow<V>(m, p, 2)};
 }
 
 /// Axis k (a column of the rotation) of a placed part.
