@@ -15,7 +15,10 @@ namespace pmdplan {
 namespace {
 
 Eigen::Matrix3d randomRotation(RandomSource& random) {
-  const Eigen::Vector3d axis(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+  // One draw per statement: the order in which a call's arguments are evaluated is the compiler's
+  // (GCC right to left, clang left to right), and the parts must be the same under both.
+  const double z = random.uniform(-1, 1), y = random.uniform(-1, 1), x = random.uniform(-1, 1);
+  const Eigen::Vector3d axis(x, y, z);
   return Eigen::AngleAxisd(random.uniform(0, 6.3), axis.normalized()).toRotationMatrix();
 }
 
