@@ -48,11 +48,14 @@ RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord
   return record;
 }
 
-RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord record, double timeLimitSeconds, PathFile* path) {
+RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord record, const PlannerParameters& parameters,
+                  PathFile* path) {
   const Task& task = bench.task();
   MotionValidator& motions = bench.checking().motions();
+  const OmplPmdSampling pmdSampling{&bench.synergies(), parameters.pmdBox, parameters.initialArmHalfSize};
   const OmplPlanningResult result = planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions,
-                                                 task.start, task.goal, timeLimitSeconds, record.seed);
+                                                 task.start, task.goal, parameters.timeLimit, record.seed,
+                                                 planner.pmdSampling ? &pmdSampling : nullptr);
   record.solved = result.solved;
   record.planningTimeSeconds = result.planningTimeSeconds;
   record.samples = result.stateChecks;
@@ -81,7 +84,7 @@ RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run,
   record.planner = planner.name;
   record.run = run;
   record.seed = parameters.seed;
-  return planner.family == PlannerFamily::Ompl ? runOmpl(bench, planner, record, parameters.timeLimit, path)
+  return planner.family == PlannerFamily::Ompl ? runOmpl(bench, planner, record, parameters, path)
                                                : runPmdRoadmap(bench, planner, record, parameters, path);
 }
 

@@ -20,6 +20,8 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "ompl_checker_adapters.hpp"
+#include "ompl_pmd_state_sampler.hpp"
+#include "pmdplan/planning/hand_sampling_mode.hpp"
 #include "pmdplan/bench/ompl_task_space.hpp"
 
 namespace pmdplan {
@@ -56,7 +58,7 @@ bool isOmplPlannerName(const std::string& name) { return findFactory(name) != nu
 
 OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSpace& space, StateValidator& states,
                                 MotionValidator& motions, const Configuration& start, const Configuration& goal,
-                                double timeLimitSeconds, std::uint64_t seed) {
+                                double timeLimitSeconds, std::uint64_t seed, const OmplPmdSampling* pmdSampling) {
   const PlannerFactory* factory = findFactory(plannerName);
   if (!factory) throw std::invalid_argument("planWithOmpl: unknown OMPL planner '" + plannerName + "'");
   if (seed == 0) throw std::invalid_argument("planWithOmpl: OMPL ignores seed 0");
@@ -65,6 +67,11 @@ OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSp
 
   const OmplTaskSpace taskSpace = makeOmplTaskSpace(space, states, motions);
   const ob::SpaceInformationPtr& si = taskSpace.spaceInformation;
+  if (pmdSampling) {
+    std::shared_ptr<const HandSampler> hands =
+        makeHandSampler(HandSamplingMode::Synergy, space, pmdSampling->synergies, pmdSampling->pmdBox);
+    installPmdStateSampler(*si->getStateSpace(), space, hands, start, goal, pmdSampling->initialArmHalfSize);
+  }
 
   ob::ScopedState<> startState(si), goalState(si);
   setStateFromConfiguration(space, start, startState.get());

@@ -3,7 +3,8 @@
 namespace pmdplan {
 
 const std::vector<PlannerEntry>& plannerRoster() {
-  static const std::vector<PlannerEntry> roster = {
+  static const std::vector<PlannerEntry> roster = [] {
+    std::vector<PlannerEntry> entries = {
       {"pmd", PlannerFamily::PmdRoadmap, HandSamplingMode::Synergy, "", "the paper's planner, hands from the PMD subspace"},
       {"full", PlannerFamily::PmdRoadmap, HandSamplingMode::FullSpace, "", "the same roadmap, hands over the whole joint box"},
       {"ompl:RRTConnect", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRTConnect", "OMPL bidirectional RRT"},
@@ -13,7 +14,18 @@ const std::vector<PlannerEntry>& plannerRoster() {
       {"ompl:BKPIECE1", PlannerFamily::Ompl, HandSamplingMode::Synergy, "BKPIECE1", "OMPL bidirectional KPIECE"},
       {"ompl:EST", PlannerFamily::Ompl, HandSamplingMode::Synergy, "EST", "OMPL expansive space trees"},
       {"ompl:RRT", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRT", "OMPL RRT"},
-  };
+    };
+    const std::size_t count = entries.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      if (entries[i].family != PlannerFamily::Ompl) continue;
+      PlannerEntry pmd = entries[i];
+      pmd.name += "@pmd";
+      pmd.description += ", states from PMD sampling";
+      pmd.pmdSampling = true;
+      entries.push_back(pmd);
+    }
+    return entries;
+  }();
   return roster;
 }
 

@@ -16,13 +16,13 @@ TEST(PlannerRoster, HoldsOursAndTheSevenOmplPlannersOnceEach) {
     EXPECT_TRUE(names.insert(entry.name).second) << entry.name;
     if (entry.family == PlannerFamily::Ompl) {
       ++ompl;
-      EXPECT_EQ(entry.name, "ompl:" + entry.omplName);
+      EXPECT_EQ(entry.name, "ompl:" + entry.omplName + (entry.pmdSampling ? "@pmd" : ""));
       EXPECT_TRUE(isOmplPlannerName(entry.omplName)) << entry.omplName;
     }
   }
-  EXPECT_EQ(ompl, 7);
+  EXPECT_EQ(ompl, 14);  // each of the seven with OMPL's sampling and with PMD sampling
   for (const char* name : {"pmd", "full", "ompl:RRTConnect", "ompl:PRM", "ompl:LazyPRM", "ompl:KPIECE1", "ompl:BKPIECE1",
-                           "ompl:EST", "ompl:RRT"})
+                           "ompl:EST", "ompl:RRT", "ompl:RRTConnect@pmd", "ompl:PRM@pmd", "ompl:RRT@pmd"})
     EXPECT_TRUE(findPlanner(name).has_value()) << name;
 }
 

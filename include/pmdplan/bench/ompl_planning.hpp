@@ -12,6 +12,8 @@
 #include "pmdplan/collision/state_validator.hpp"
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/planning_space.hpp"
+#include "pmdplan/synergy/synergy_model.hpp"
+#include "pmdplan/planning/synergy_hand_sampler.hpp"
 
 namespace pmdplan {
 
@@ -36,11 +38,20 @@ struct OmplPlanningResult {
 /// "EST", "RRT").
 bool isOmplPlannerName(const std::string& name);
 
+/// PMD sampling for OMPL's planners (the `@pmd` suffix): every planner's states are drawn by
+/// OmplPmdStateSampler (src/bench/ompl_pmd_state_sampler.hpp) from this model and arm region.
+struct OmplPmdSampling {
+  const SynergyModel* synergies = nullptr;
+  SynergySamplingParameters pmdBox;
+  double initialArmHalfSize = 0.001;  ///< rho_a at the first draw (PlannerParameters' setting)
+};
+
 /// One run. Sets OMPL's process-wide seed (ompl::RNG::setSeed), which OMPL honours only before its
 /// first random number in a process: call this once per process (pmdplan bench forks a process per
 /// run). `seed` must not be 0 (OMPL ignores it). Throws std::invalid_argument for an unknown name.
 OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSpace& space, StateValidator& states,
                                 MotionValidator& motions, const Configuration& start, const Configuration& goal,
-                                double timeLimitSeconds, std::uint64_t seed);
+                                double timeLimitSeconds, std::uint64_t seed,
+                                const OmplPmdSampling* pmdSampling = nullptr);
 
 }  // namespace pmdplan

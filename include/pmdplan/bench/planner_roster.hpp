@@ -20,6 +20,8 @@ struct PlannerEntry {
   HandSamplingMode mode = HandSamplingMode::Synergy;  ///< PmdRoadmap only
   std::string omplName;         ///< Ompl only: "RRTConnect" (ompl_planning.hpp makes it)
   std::string description;
+  /// Ompl only: states drawn by PMD sampling (name "ompl:<Planner>@pmd").
+  bool pmdSampling = false;
 };
 
 /// Every known planner, in the order the help and error messages list them.
