@@ -75,25 +75,30 @@ bool decodeTarget(const std::string& target, std::string& relative) {
 
 }  // namespace
 
-StaticFileServer::StaticFileServer(std::filesystem::path root, int port) : root_(std::move(root)) {
+int listenOnLoopback(int port, int& boundPort) {
   if (port < 0 || port > 65535) throw InputError("", "--serve", "expected a port number 0-65535 (0: any free port)");
-  socket_ = ::socket(AF_INET, SOCK_STREAM, 0);
-  if (socket_ < 0) throw InputError("", "--serve", std::string("cannot open a socket: ") + std::strerror(errno));
+  const int listening = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (listening < 0) throw InputError("", "--serve", std::string("cannot open a socket: ") + std::strerror(errno));
   const int yes = 1;
-  ::setsockopt(socket_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  ::setsockopt(listening, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   address.sin_port = htons(static_cast<std::uint16_t>(port));
-  if (::bind(socket_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(socket_, 16) != 0) {
+  if (::bind(listening, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(listening, 16) != 0) {
     const std::string reason = std::strerror(errno);
-    ::close(socket_);
+    ::close(listening);
     throw InputError("", "--serve", "cannot listen on 127.0.0.1:" + std::to_string(port) + " (" + reason +
                                         "); pick another port, or 0 for any free one");
   }
   socklen_t length = sizeof address;
-  ::getsockname(socket_, reinterpret_cast<sockaddr*>(&address), &length);
-  port_ = ntohs(address.sin_port);
+  ::getsockname(listening, reinterpret_cast<sockaddr*>(&address), &length);
+  boundPort = ntohs(address.sin_port);
+  return listening;
+}
+
+StaticFileServer::StaticFileServer(std::filesystem::path root, int port) : root_(std::move(root)) {
+  socket_ = listenOnLoopback(port, port_);
 }
 
 StaticFileServer::~StaticFileServer() {

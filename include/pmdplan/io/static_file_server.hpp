@@ -7,6 +7,10 @@
 
 namespace pmdplan {
 
+/// A listening socket on 127.0.0.1:`port` (0: a free port the system picks); `boundPort` gets the
+/// port it listens on. Throws InputError (field "--serve") if the port is out of range or cannot
+/// be bound.
+int listenOnLoopback(int port, int& boundPort);
 /// Reads a request's head from a connected socket (at most 16 KiB, waiting at most 5 s).
 std::string readRequestHead(int connection);
 /// The path a GET request asks for ("/events" of "GET /events?x HTTP/1.1"), empty for others.
