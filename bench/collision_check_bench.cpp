@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "collision/primitive_meshes.hpp"
-#include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/random_source.hpp"
@@ -44,7 +44,7 @@ constexpr std::size_t kMaxRecorded = 20000;
 
 /// Passes every check on to the fast checker and keeps the configurations (up to a limit).
 class RecordingValidator : public StateValidator {
-public:
+ public:
   explicit RecordingValidator(StateValidator& inner) : inner_(inner) {}
   bool isValid(const Configuration& q) override {
     if (recorded.size() < kMaxRecorded) recorded.push_back(q);
@@ -54,7 +54,7 @@ public:
   std::size_t checkCount() const override { return inner_.checkCount(); }
   std::vector<Configuration> recorded;
 
-private:
+ private:
   StateValidator& inner_;
 };
 
@@ -85,7 +85,7 @@ struct Segment {
 
 /// Passes every motion check on and keeps its ends (up to a limit): the planner's own segments.
 class RecordingMotions : public MotionValidator {
-public:
+ public:
   explicit RecordingMotions(MotionValidator& inner) : inner_(inner) {}
   bool isValid(const Configuration& from, const Configuration& to) override {
     if (recorded.size() < 400) recorded.push_back({from, to});
@@ -94,7 +94,7 @@ public:
   std::size_t statesChecked() const override { return inner_.statesChecked(); }
   std::vector<Segment> recorded;
 
-private:
+ private:
   MotionValidator& inner_;
 };
 
@@ -117,8 +117,8 @@ TaskData& taskData(const std::string& name) {
   if (name.rfind(meshPrefix, 0) == 0) {
     static const test::TempDir folder;
     static const auto robots = dataDirectory() / "robots" / "sah_tx90";
-    static const auto urdf = testing::writeMeshRobot(folder, robots / "sah_tx90.urdf", robots / "sah_tx90.srdf", "mesh_robot",
-                                                     testing::Tessellation::Circumscribed);
+    static const auto urdf = testing::writeMeshRobot(folder, robots / "sah_tx90.urdf", robots / "sah_tx90.srdf",
+                                                     "mesh_robot", testing::Tessellation::Circumscribed);
     const std::string task = name.substr(meshPrefix.size());
     d.task = loadTask(folder.write(task + ".yaml", testing::builtInTaskText(task, urdf.string())));
   } else {
@@ -137,7 +137,8 @@ TaskData& taskData(const std::string& name) {
   PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   parameters.seed = 1;
   parameters.timeLimit = 60.0;
-  PmdRoadmapPlanner planner(space, recorder, motions, makeHandSampler(HandSamplingMode::Synergy, space, &synergies), parameters);
+  PmdRoadmapPlanner planner(space, recorder, motions, makeHandSampler(HandSamplingMode::Synergy, space, &synergies),
+                            parameters);
   planner.setStartAndGoal(d.task.start, d.task.goal);
   planner.solve();
   d.planStates = std::move(recorder.recorded);
@@ -201,14 +202,15 @@ void checkSegments(benchmark::State& state, const std::string& name, bool fast, 
     free += motions.isValid(segments[i].from, segments[i].to);
     if (++i == segments.size()) i = 0;
   }
-  state.counters["states_per_segment"] = static_cast<double>(motions.statesChecked()) / static_cast<double>(state.iterations());
+  state.counters["states_per_segment"] =
+      static_cast<double>(motions.statesChecked()) / static_cast<double>(state.iterations());
   state.counters["free_share"] = static_cast<double>(free) / static_cast<double>(state.iterations());
 }
 
 /// Keeps every run's time per iteration for the ratio summary: with --benchmark_repetitions, the
 /// fastest repetition of each benchmark (on a shared machine, other load only ever adds time).
 class RatioReporter : public benchmark::ConsoleReporter {
-public:
+ public:
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const auto& run : runs) {
       if (run.run_type != Run::RT_Iteration) continue;
@@ -232,12 +234,13 @@ int main(int argc, char** argv) {
     const int widest = FastCollisionChecker::widestLaneWidth();
     const int narrowest = name.rfind("mesh:", 0) == 0 ? widest : 2;
     for (const auto& [which, label] : {std::pair{0, "plan"}, std::pair{1, "random"}}) {
-      benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/exact").c_str(),
-                                   [=](benchmark::State& s) { checkStates(s, name, false, which, widest); })
-          ->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/exact").c_str(), [=](benchmark::State& s) {
+        checkStates(s, name, false, which, widest);
+      })->Unit(benchmark::kMicrosecond);
       for (int width = widest; width >= narrowest; width /= 2)
-        benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/fast" + (width == widest ? "" : "-" + std::to_string(width))).c_str(),
-                                     [=](benchmark::State& s) { checkStates(s, name, true, which, width); })
+        benchmark::RegisterBenchmark(
+            ("check/" + name + "/" + label + "/fast" + (width == widest ? "" : "-" + std::to_string(width))).c_str(),
+            [=](benchmark::State& s) { checkStates(s, name, true, which, width); })
             ->Unit(benchmark::kMicrosecond);
     }
     for (const auto& [planned, label] : {std::pair{true, "plan"}, std::pair{false, "short"}})
@@ -248,15 +251,16 @@ int main(int argc, char** argv) {
   }
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  std::printf("\nexact / fast time ratio (%s kernels; the fastest repetition of each)\n", BatchedForwardKinematics::simdLevel());
+  std::printf("\nexact / fast time ratio (%s kernels; the fastest repetition of each)\n",
+              BatchedForwardKinematics::simdLevel());
   for (const auto& [benchmarkName, exactTime] : reporter.times) {
     const auto at = benchmarkName.rfind("/exact");
     if (at == std::string::npos || at + 6 != benchmarkName.size()) continue;
     const std::string stem = benchmarkName.substr(0, at);
     for (const auto& [fastName, fastTime] : reporter.times) {
       if (fastName.rfind(stem + "/fast", 0) != 0) continue;
-      std::printf("  %-34s %-7s exact %9.2f us  fast %8.2f us  ratio %6.1f\n", stem.c_str(), fastName.substr(stem.size() + 1).c_str(), exactTime,
-                  fastTime, exactTime / fastTime);
+      std::printf("  %-34s %-7s exact %9.2f us  fast %8.2f us  ratio %6.1f\n", stem.c_str(),
+                  fastName.substr(stem.size() + 1).c_str(), exactTime, fastTime, exactTime / fastTime);
     }
   }
   benchmark::Shutdown();

@@ -67,16 +67,16 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   for (const auto& name : kTasks)
     for (const CheckerKind kind : {CheckerKind::Fast, CheckerKind::Exact})
-      benchmark::RegisterBenchmark(("plan/" + name + "/" + checkerKindName(kind)).c_str(),
-                                   [=](benchmark::State& s) { planRuns(s, name, kind); })
-          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("plan/" + name + "/" + checkerKindName(kind)).c_str(), [=](benchmark::State& s) {
+        planRuns(s, name, kind);
+      })->Unit(benchmark::kMillisecond);
   benchmark::RunSpecifiedBenchmarks();
   std::printf("\nplanning time over the runs made (seeds 1..n)\n");
   for (auto& [label, times] : planningTimes()) {
     if (times.empty()) continue;
     std::sort(times.begin(), times.end());
-    std::printf("  %-28s runs %5zu  median %9.3f ms  p90 %9.3f ms\n", label.c_str(), times.size(), 1e3 * times[times.size() / 2],
-                1e3 * times[times.size() * 9 / 10]);
+    std::printf("  %-28s runs %5zu  median %9.3f ms  p90 %9.3f ms\n", label.c_str(), times.size(),
+                1e3 * times[times.size() / 2], 1e3 * times[times.size() * 9 / 10]);
   }
   benchmark::Shutdown();
   return 0;

@@ -39,7 +39,8 @@ const PaperSizedSession& session() {
 
 void reportModel(benchmark::State& state, const RecordingAnalysis& analysis) {
   state.counters["frames"] = analysis.fit.frames;
-  state.counters["frames_per_s"] = benchmark::Counter(analysis.fit.frames, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["frames_per_s"] =
+      benchmark::Counter(analysis.fit.frames, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["cum1_pct"] = 100 * analysis.fit.cumulativeVariance(0);
   state.counters["cum2_pct"] = 100 * analysis.fit.cumulativeVariance(1);
   state.counters["cum3_pct"] = 100 * analysis.fit.cumulativeVariance(2);
@@ -52,7 +53,8 @@ void BM_CsvRecordingToSynergyModel(benchmark::State& state) {
   RecordingAnalysis analysis;
   for (auto _ : state) {
     const GloveRecording recording = parseGloveCsv(s.csv, "synthetic.csv");
-    analysis = analyseRecording(recording, s.calibration, s.mapping, s.hand, SynergyFitOptions{{"thumb_base"}}, "bench");
+    analysis =
+        analyseRecording(recording, s.calibration, s.mapping, s.hand, SynergyFitOptions{{"thumb_base"}}, "bench");
     benchmark::DoNotOptimize(analysis.fit.model.directions.data());
   }
   reportModel(state, analysis);
@@ -64,7 +66,8 @@ void BM_FramesToSynergyModel(benchmark::State& state) {
   const auto& s = session();
   RecordingAnalysis analysis;
   for (auto _ : state) {
-    analysis = analyseRecording(s.recording, s.calibration, s.mapping, s.hand, SynergyFitOptions{{"thumb_base"}}, "bench");
+    analysis =
+        analyseRecording(s.recording, s.calibration, s.mapping, s.hand, SynergyFitOptions{{"thumb_base"}}, "bench");
     benchmark::DoNotOptimize(analysis.fit.model.directions.data());
   }
   reportModel(state, analysis);

@@ -7,5 +7,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const pmdplan::JointLimits hand = pmdplan::RobotModel::loadBuiltIn("sah_tx90").groupJoints("hand");
   const auto file = pmdplan::fuzz::writeScratch("postures.csv", pmdplan::fuzz::asText(data, size));
-  return pmdplan::fuzz::expectAcceptedOrInputError([&] { pmdplan::readPostureCsv(file, hand, pmdplan::PostureUnit::Degrees); });
+  return pmdplan::fuzz::expectAcceptedOrInputError(
+      [&] { pmdplan::readPostureCsv(file, hand, pmdplan::PostureUnit::Degrees); });
 }

@@ -100,20 +100,23 @@ std::string hostName() {
 }
 
 /// `taskNames`: the tasks' own names (a task given as a file is known by the name inside it).
-void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNames, const std::vector<RunRecord>& records,
-                  const std::string& markdown, const std::string& started, double totalSeconds, int ranks) {
+void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNames,
+                  const std::vector<RunRecord>& records, const std::string& markdown, const std::string& started,
+                  double totalSeconds, int ranks) {
   if (!o.csv.empty()) writeFileAtomically(o.csv, runRecordsCsv(records));
   if (!o.markdown.empty()) writeFileAtomically(o.markdown, markdown);
   if (!o.plot.empty()) writeFileAtomically(o.plot, planningTimeBoxPlotSvg(records, taskNames, o.planners, o.timeLimit));
   if (!o.omplLog.empty()) {
     char setup[256];
-    std::snprintf(setup, sizeof setup,
-                  "pmdplan bench: checker %s, tolerance %g mm, %d rank(s); paths smoothed by pmdplan's shortcut smoothing "
-                  "(Sect. 5.3) and re-validated by the exact checker",
-                  checkerKindName(o.checker).c_str(), o.toleranceMetres * 1000.0, ranks);
+    std::snprintf(
+        setup, sizeof setup,
+        "pmdplan bench: checker %s, tolerance %g mm, %d rank(s); paths smoothed by pmdplan's shortcut smoothing "
+        "(Sect. 5.3) and re-validated by the exact checker",
+        checkerKindName(o.checker).c_str(), o.toleranceMetres * 1000.0, ranks);
     for (const std::string& task : taskNames) {
       const OmplLogContext context{hostName(), started, setup, o.seed, o.timeLimit, o.runs, totalSeconds};
-      writeFileAtomically(omplLogPathForTask(o.omplLog, task, taskNames.size()), omplBenchmarkLog(records, task, o.planners, context));
+      writeFileAtomically(omplLogPathForTask(o.omplLog, task, taskNames.size()),
+                          omplBenchmarkLog(records, task, o.planners, context));
     }
   }
 }
@@ -133,7 +136,8 @@ int report(const BenchOptions& o, const CampaignInputs& inputs) {
   const std::string now = utcNow();
   const std::string markdown = "**Partial campaign: " + std::to_string(records.size()) + " of " + std::to_string(jobs) +
                                " runs finished** (the journal as of " + now +
-                               "); success counts are over the finished runs.\n\n" + benchMarkdown(records, taskNames, o.planners);
+                               "); success counts are over the finished runs.\n\n" +
+                               benchMarkdown(records, taskNames, o.planners);
   double runSeconds = 0.0;
   for (const RunRecord& r : records) runSeconds += r.planningTimeSeconds + r.smoothingTimeSeconds;
   writeOutputs(o, taskNames, records, markdown, now, runSeconds, 1);
@@ -161,38 +165,47 @@ int run(const CommandLine& c) {
   const std::string markdown = benchMarkdown(records, taskNames, o.planners);
   writeOutputs(o, taskNames, records, markdown, started, totalSeconds, ranks.size());
   std::cout << markdown;
-  std::printf("\n%zu runs in %.1f s on %d rank(s), checker %s, time limit %g s, seeds %llu..%llu\n", records.size(), totalSeconds,
-              ranks.size(), checkerKindName(o.checker).c_str(), o.timeLimit, static_cast<unsigned long long>(o.seed),
+  std::printf("\n%zu runs in %.1f s on %d rank(s), checker %s, time limit %g s, seeds %llu..%llu\n", records.size(),
+              totalSeconds, ranks.size(), checkerKindName(o.checker).c_str(), o.timeLimit,
+              static_cast<unsigned long long>(o.seed),
               static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.runs) - 1));
   if (const std::size_t failed = requiredFailures(records, c.require); failed > 0) {
-    std::fprintf(stderr, "pmdplan: %zu run(s) of the --require planners (%s) did not solve with a valid path\n", failed, c.require.c_str());
+    std::fprintf(stderr, "pmdplan: %zu run(s) of the --require planners (%s) did not solve with a valid path\n", failed,
+                 c.require.c_str());
     return 1;
   }
   return 0;
 }
 
-const CommandRegistrar registrar{"bench", "Compare planners on tasks: many seeded runs, tables, CSV, OMPL log, plot (MPI-aware)",
-                                 [](CLI::App& app) {
-  auto c = std::make_shared<CommandLine>();
-  addPackagePathOption(app);
-  app.add_option("task", c->tasks, "Built-in task names or task files (default: the five paper tasks)");
-  app.add_option("--planners", c->planners, "Comma-separated planners: " + knownPlannerNames() + " (default pmd)");
-  app.add_option("--runs", c->runs, "Runs per task and planner; run i uses seed S + i (default 10)");
-  app.add_option("--grace", c->grace, "Seconds past the time limit before a run's process is killed (default max(60, limit))");
-  app.add_option("--checker", c->checker, "exact (FCL) or fast (default fast)");
-  app.add_option("--tolerance-mm", c->toleranceMm, "Motion check and validation tolerance in millimetres (default 1)");
-  app.add_option("--synergies", c->synergies, "Synergy model file (default: the robot's shipped model)");
-  app.add_option("--require", c->require, "Comma-separated planners whose every run must solve with a valid path (else exit 1)");
-  app.add_option("--csv", c->csv, "Write every run as a CSV row");
-  app.add_option("--markdown", c->markdown, "Write the tables as Markdown");
-  app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
-  app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
-  app.add_option("--paths", c->paths, "Write each solved run's path to this folder as TASK.PLANNER.seedN.path.json (pmdplan view DIR --seed N)");
-  addPlannerSettingOptions(app, c->settings, "First seed S, >= 1: run i uses seed S + i");
-  app.add_option("--journal", c->journal, "Keep finished runs in this folder as they finish; the same command again resumes there");
-  app.add_flag("--report", c->report, "Run nothing: write the outputs from the --journal's finished runs (a campaign part way)");
-  return [c] { return run(*c); };
-}};
+const CommandRegistrar registrar{
+    "bench", "Compare planners on tasks: many seeded runs, tables, CSV, OMPL log, plot (MPI-aware)", [](CLI::App& app) {
+      auto c = std::make_shared<CommandLine>();
+      addPackagePathOption(app);
+      app.add_option("task", c->tasks, "Built-in task names or task files (default: the five paper tasks)");
+      app.add_option("--planners", c->planners, "Comma-separated planners: " + knownPlannerNames() + " (default pmd)");
+      app.add_option("--runs", c->runs, "Runs per task and planner; run i uses seed S + i (default 10)");
+      app.add_option("--grace", c->grace,
+                     "Seconds past the time limit before a run's process is killed (default max(60, limit))");
+      app.add_option("--checker", c->checker, "exact (FCL) or fast (default fast)");
+      app.add_option("--tolerance-mm", c->toleranceMm,
+                     "Motion check and validation tolerance in millimetres (default 1)");
+      app.add_option("--synergies", c->synergies, "Synergy model file (default: the robot's shipped model)");
+      app.add_option("--require", c->require,
+                     "Comma-separated planners whose every run must solve with a valid path (else exit 1)");
+      app.add_option("--csv", c->csv, "Write every run as a CSV row");
+      app.add_option("--markdown", c->markdown, "Write the tables as Markdown");
+      app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
+      app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
+      app.add_option(
+          "--paths", c->paths,
+          "Write each solved run's path to this folder as TASK.PLANNER.seedN.path.json (pmdplan view DIR --seed N)");
+      addPlannerSettingOptions(app, c->settings, "First seed S, >= 1: run i uses seed S + i");
+      app.add_option("--journal", c->journal,
+                     "Keep finished runs in this folder as they finish; the same command again resumes there");
+      app.add_flag("--report", c->report,
+                   "Run nothing: write the outputs from the --journal's finished runs (a campaign part way)");
+      return [c] { return run(*c); };
+    }};
 
 }  // namespace
 }  // namespace pmdplan::cli

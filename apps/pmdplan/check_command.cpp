@@ -1,21 +1,20 @@
 // `pmdplan check [TASK] [--json]`: are the task's start and goal valid (or is the goal a grasp of
 // the target), how far is each from the obstacles (clearance, or penetration depth), where is the
 // palm, and is the straight joint-space segment between them free at the motion tolerance?
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "command_registry.hpp"
-#include "robot_setup.hpp"
 #include "package_path_option.hpp"
-#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/grasp_contact.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/world/task.hpp"
+#include "robot_setup.hpp"
 
 namespace pmdplan::cli {
 namespace {
@@ -37,7 +36,8 @@ nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 nlohmann::json configurationJson(ExactCollisionChecker& checker, const Configuration& q) {
   const auto report = checker.check(q);
   const auto& model = checker.model();
-  if (model.palmLink() < 0) throw InputError(model.urdfPath().string(), "end_effector",
+  if (model.palmLink() < 0)
+    throw InputError(model.urdfPath().string(), "end_effector",
                      "the robot names no palm link; write its SRDF with " + robotInitHint(model.urdfPath()));
   const Eigen::Isometry3d palm = checker.kinematics().linkPoses(q)[static_cast<std::size_t>(model.palmLink())];
   const auto clearance = checker.clearance(q);
@@ -59,12 +59,14 @@ std::string describe(const std::string& label, const nlohmann::json& c) {
   std::string text = line;
   if (!c["clearance_mm"].is_null()) {
     const double mm = c["clearance_mm"].get<double>();
-    std::snprintf(line, sizeof line, "\n         %s %.2f mm (%s - %s)", mm < 0.0 ? "penetration" : "clearance", std::abs(mm),
-                  c["nearest"][0].get<std::string>().c_str(), c["nearest"][1].get<std::string>().c_str());
+    std::snprintf(line, sizeof line, "\n         %s %.2f mm (%s - %s)", mm < 0.0 ? "penetration" : "clearance",
+                  std::abs(mm), c["nearest"][0].get<std::string>().c_str(), c["nearest"][1].get<std::string>().c_str());
     text += line;
   }
-  if (c.contains("grasp")) text += "\n         grasps the target " + c["grasp"].get<std::string>() + ": planned as an approach, then closing";
-  for (const auto& pair : c["collisions"]) text += "\n         collides: " + pair[0].get<std::string>() + " - " + pair[1].get<std::string>();
+  if (c.contains("grasp"))
+    text += "\n         grasps the target " + c["grasp"].get<std::string>() + ": planned as an approach, then closing";
+  for (const auto& pair : c["collisions"])
+    text += "\n         collides: " + pair[0].get<std::string>() + " - " + pair[1].get<std::string>();
   return text;
 }
 
@@ -77,12 +79,13 @@ int run(const Options& o) {
   auto goal = configurationJson(checker, task.goal);
   if (classifyGoal(checker, task).contact == GoalContact::GraspsTarget) goal["grasp"] = *task.target;
   const auto line = segments.inspect(checker, task.start, task.goal);
-  nlohmann::json straight = {{"free", line.free},
-                             {"first_collision", line.firstCollision ? nlohmann::json(*line.firstCollision) : nlohmann::json()},
-                             {"collisions", pairsJson(line.collisions)},
-                             {"states_checked", line.statesChecked},
-                             {"states_needed", line.statesNeeded},
-                             {"tolerance_mm", o.toleranceMm}};
+  nlohmann::json straight = {
+      {"free", line.free},
+      {"first_collision", line.firstCollision ? nlohmann::json(*line.firstCollision) : nlohmann::json()},
+      {"collisions", pairsJson(line.collisions)},
+      {"states_checked", line.statesChecked},
+      {"states_needed", line.statesNeeded},
+      {"tolerance_mm", o.toleranceMm}};
   if (o.json) {
     nlohmann::json out = {{"task", task.name}, {"start", start}, {"goal", goal}, {"straight_line", straight}};
     std::cout << out.dump(2) << "\n";
@@ -92,7 +95,8 @@ int run(const Options& o) {
             << describe("start", start) << "\n"
             << describe("goal", goal) << "\n";
   if (line.free) {
-    std::cout << "straight segment start -> goal: free (" << line.statesChecked << " states at " << o.toleranceMm << " mm)\n";
+    std::cout << "straight segment start -> goal: free (" << line.statesChecked << " states at " << o.toleranceMm
+              << " mm)\n";
   } else {
     std::printf("straight segment start -> goal: in collision from %.1f %% of the way (state %ld of %ld at %g mm)\n",
                 100.0 * *line.firstCollision, line.statesChecked, line.statesNeeded, o.toleranceMm);
@@ -101,15 +105,15 @@ int run(const Options& o) {
   return 0;
 }
 
-const CommandRegistrar registrar{"check", "Check a task: start and goal validity, palm poses, the straight segment",
-                                 [](CLI::App& app) {
-                                   auto o = std::make_shared<Options>();
-                                   addPackagePathOption(app);
-                                   app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
-                                   app.add_flag("--json", o->json, "Print JSON instead of text");
-                                   app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
-                                   return [o] { return run(*o); };
-                                 }};
+const CommandRegistrar registrar{
+    "check", "Check a task: start and goal validity, palm poses, the straight segment", [](CLI::App& app) {
+      auto o = std::make_shared<Options>();
+      addPackagePathOption(app);
+      app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
+      app.add_flag("--json", o->json, "Print JSON instead of text");
+      app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
+      return [o] { return run(*o); };
+    }};
 
 }  // namespace
 }  // namespace pmdplan::cli

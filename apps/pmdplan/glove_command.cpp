@@ -21,7 +21,6 @@
 namespace pmdplan::cli {
 namespace {
 
-
 std::filesystem::path calibrationBeside(const std::filesystem::path& recording) {
   return std::filesystem::path(recording).replace_extension(".calibration.yaml");
 }
@@ -37,18 +36,23 @@ struct SynthOptions {
 
 int runSynth(const SynthOptions& o) {
   if (o.frames < 1 || o.frames > kMaxSyntheticFrames)
-    throw InputError("", "--frames", "expected 1 to " + std::to_string(kMaxSyntheticFrames) + " frames, got " + std::to_string(o.frames));
+    throw InputError(
+        "", "--frames",
+        "expected 1 to " + std::to_string(kMaxSyntheticFrames) + " frames, got " + std::to_string(o.frames));
   const std::filesystem::path output = o.output;
-  if (output.extension() != ".csv") throw InputError("", "-o", "the synthetic recording is written as CSV: give a .csv file name");
+  if (output.extension() != ".csv")
+    throw InputError("", "-o", "the synthetic recording is written as CSV: give a .csv file name");
   const std::filesystem::path calibrationPath =
       o.calibrationOutput.empty() ? calibrationBeside(output) : std::filesystem::path(o.calibrationOutput);
   checkOutputPath(output, "-o", {o.mapping});
   checkOutputPath(calibrationPath, "--calibration-out", {o.mapping, output});
-  const HandMapping mapping = loadHandMapping(o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping));
+  const HandMapping mapping =
+      loadHandMapping(o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping));
   SyntheticOperatorParameters parameters;
   parameters.frames = o.frames;
   parameters.seed = o.seed;
-  SyntheticGloveSession session = synthesiseGloveSession(parameters, mapping, RobotModel::loadByNameOrPath(o.robot).groupJoints("hand"));
+  SyntheticGloveSession session =
+      synthesiseGloveSession(parameters, mapping, RobotModel::loadByNameOrPath(o.robot).groupJoints("hand"));
   session.recording.notes.push_back("Calibration: " + calibrationPath.filename().string() + " (also synthetic).");
   writeFileAtomically(output, formatGloveCsv(session.recording));
   writeFileAtomically(calibrationPath, formatGloveCalibration(session.calibration));
@@ -66,7 +70,8 @@ GloveFormat formatOf(const std::string& path, const std::string& given, const st
   const auto extension = std::filesystem::path(path).extension();
   if (extension == ".csv" || extension == ".txt") return GloveFormat::Csv;
   if (extension == ".bin" || extension == ".raw" || extension == ".serial") return GloveFormat::Serial;
-  throw InputError(path, option, "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give " + option);
+  throw InputError(path, option,
+                   "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give " + option);
 }
 
 struct ConvertOptions {
@@ -78,8 +83,8 @@ struct ConvertOptions {
 
 int runConvert(const ConvertOptions& o) {
   checkOutputPath(o.output, "-o", {o.input});
-  const GloveRecording recording = formatOf(o.input, o.from, "--from") == GloveFormat::Csv ? readGloveCsv(o.input)
-                                                                                           : readGloveSerialStream(o.input);
+  const GloveRecording recording =
+      formatOf(o.input, o.from, "--from") == GloveFormat::Csv ? readGloveCsv(o.input) : readGloveSerialStream(o.input);
   if (formatOf(o.output, o.to, "--to") == GloveFormat::Csv) {
     writeFileAtomically(o.output, formatGloveCsv(recording));
   } else {
@@ -95,22 +100,27 @@ int runConvert(const ConvertOptions& o) {
 }
 
 const CommandRegistrar registrar{
-    "glove", "Glove recordings: a synthetic operator (synth), format conversion (convert), the glove live (stream)", [](CLI::App& app) {
+    "glove", "Glove recordings: a synthetic operator (synth), format conversion (convert), the glove live (stream)",
+    [](CLI::App& app) {
       app.require_subcommand(1);
       auto synth = std::make_shared<SynthOptions>();
       CLI::App* synthCommand = app.add_subcommand(
           "synth", "Write a SYNTHETIC operator's raw 22-sensor glove recording (CSV) and its calibration");
-      synthCommand->add_option("--frames", synth->frames, "Number of frames at 100 Hz (default 13500, as in the paper)");
-      synthCommand->add_option("--seed", synth->seed, "Random seed (same seed, same bytes; default 1)")->check(wholeNumber());
+      synthCommand->add_option("--frames", synth->frames,
+                               "Number of frames at 100 Hz (default 13500, as in the paper)");
+      synthCommand->add_option("--seed", synth->seed, "Random seed (same seed, same bytes; default 1)")
+          ->check(wholeNumber());
       synthCommand->add_option("-o,--output", synth->output, "Recording to write (.csv)")->required();
       synthCommand->add_option("--calibration-out", synth->calibrationOutput,
                                "Calibration file to write (default: the recording's name with .calibration.yaml)");
-      synthCommand->add_option("--mapping", synth->mapping, "Hand mapping to invert (default data/glove/cyberglove22_to_sah.yaml)");
+      synthCommand->add_option("--mapping", synth->mapping,
+                               "Hand mapping to invert (default data/glove/cyberglove22_to_sah.yaml)");
       addPackagePathOption(*synthCommand);
       synthCommand->add_option("--robot", synth->robot, "Built-in robot name or .urdf file (default sah_tx90)");
 
       auto convert = std::make_shared<ConvertOptions>();
-      CLI::App* convertCommand = app.add_subcommand("convert", "Convert a recording between CSV and the raw 'G'-reply stream");
+      CLI::App* convertCommand =
+          app.add_subcommand("convert", "Convert a recording between CSV and the raw 'G'-reply stream");
       convertCommand->add_option("input", convert->input, "Recording to read")->required();
       convertCommand->add_option("-o,--output", convert->output, "Recording to write")->required();
       convertCommand->add_option("--from", convert->from, "Input format: csv, serial or auto (by extension)");

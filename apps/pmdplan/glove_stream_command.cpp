@@ -6,12 +6,12 @@
 // closes, falls silent or sends no replies ends it with exit 2 and keeps what was recorded.
 #include "glove_stream_command.hpp"
 
-#include <csignal>
 #include <chrono>
+#include <csignal>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "package_path_option.hpp"
 #include "pmdplan/core/atomic_file.hpp"
@@ -66,7 +66,8 @@ struct Options {
 GloveRecording readReplay(const Options& o) {
   std::string format = o.format;
   const auto extension = std::filesystem::path(o.replay).extension();
-  if (format == "auto") format = (extension == ".bin" || extension == ".raw" || extension == ".serial") ? "serial" : "csv";
+  if (format == "auto")
+    format = (extension == ".bin" || extension == ".raw" || extension == ".serial") ? "serial" : "csv";
   if (format == "csv") return readGloveCsv(o.replay);
   if (format == "serial") return readGloveSerialStream(o.replay);
   throw InputError("", "--format", "expected csv, serial or auto, got '" + o.format + "'");
@@ -77,10 +78,12 @@ std::filesystem::path calibrationPath(const Options& o) {
   if (!o.replay.empty()) {
     const auto beside = std::filesystem::path(o.replay).replace_extension(".calibration.yaml");
     if (std::filesystem::exists(beside)) return beside;
-    throw InputError(o.replay, "--calibration", "no calibration given and " + beside.filename().string() +
-                                                    " is not beside the recording; pass --calibration FILE");
+    throw InputError(o.replay, "--calibration",
+                     "no calibration given and " + beside.filename().string() +
+                         " is not beside the recording; pass --calibration FILE");
   }
-  throw InputError(o.device, "--calibration", "a live glove needs its operator's calibration: pass --calibration FILE.yaml");
+  throw InputError(o.device, "--calibration",
+                   "a live glove needs its operator's calibration: pass --calibration FILE.yaml");
 }
 
 /// The page: the task's scene with the robot at the task's start; the live hand replaces its hand.
@@ -97,10 +100,11 @@ ViewerData liveViewerData(const Task& task, const SynergyModel* synergies, const
   data.document["warnings"] = nlohmann::ordered_json::array();  // a still pose, not a path: its ends are no one's goal
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
   for (const auto& joint : hand) joints.push_back(joint.name);
-  data.document["live"] = {{"events", "events"},
-                           {"hand_joints", joints},
-                           {"source", source},
-                           {"project_pmds", projectPmds ? nlohmann::ordered_json(*projectPmds) : nlohmann::ordered_json()}};
+  data.document["live"] = {
+      {"events", "events"},
+      {"hand_joints", joints},
+      {"source", source},
+      {"project_pmds", projectPmds ? nlohmann::ordered_json(*projectPmds) : nlohmann::ordered_json()}};
   return data;
 }
 
@@ -116,51 +120,66 @@ double epochMilliseconds() {
 
 int run(const Options& o) {
   if (o.device.empty() == o.replay.empty())
-    throw InputError("", "--device", "give one source: the glove's serial device (--device /dev/ttyUSB0) or a recording to play (--replay REC.csv)");
+    throw InputError(
+        "", "--device",
+        "give one source: the glove's serial device (--device /dev/ttyUSB0) or a recording to play (--replay REC.csv)");
   if (o.output.empty() && o.rawOutput.empty() && !o.servePort)
-    throw InputError("", "-o", "nothing to do: give -o POSTURES.csv (the recording), --raw-out RAW.csv, --serve PORT (the live viewer), or several");
+    throw InputError("", "-o",
+                     "nothing to do: give -o POSTURES.csv (the recording), --raw-out RAW.csv, --serve PORT (the live "
+                     "viewer), or several");
   if (o.frames < 0) throw InputError("", "--frames", "expected 0 (no limit) or a number of frames to stop after");
   const Task task = loadTaskByName(o.task);
   const JointLimits hand = task.robot->groupJoints("hand");
   const std::filesystem::path calibrationFile = calibrationPath(o);
   const GloveCalibration calibration = loadGloveCalibration(calibrationFile);
-  const std::filesystem::path mappingFile = o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
+  const std::filesystem::path mappingFile =
+      o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
   const HandMapping mapping = loadHandMapping(mappingFile);
   rulesForJoints(mapping, hand);  // a mapping of another hand fails here, not at the first frame
 
   std::filesystem::path synergyFile = o.synergies;
-  if (synergyFile.empty() && (o.projectPmds || o.servePort) && std::filesystem::exists(defaultSynergyModelPath(task.robot->name())))
+  if (synergyFile.empty() && (o.projectPmds || o.servePort) &&
+      std::filesystem::exists(defaultSynergyModelPath(task.robot->name())))
     synergyFile = defaultSynergyModelPath(task.robot->name());
   if (o.projectPmds && synergyFile.empty())
-    throw InputError("", "--synergies", "--project-pmds needs a synergy model and robot " + task.robot->name() + " has none shipped: pass --synergies MODEL.yaml");
+    throw InputError("", "--synergies",
+                     "--project-pmds needs a synergy model and robot " + task.robot->name() +
+                         " has none shipped: pass --synergies MODEL.yaml");
   const std::optional<SynergyModel> synergies =
       synergyFile.empty() ? std::nullopt : std::optional<SynergyModel>(loadSynergyModel(synergyFile));
   std::optional<PmdPostureFilter> filter;
   if (o.projectPmds) filter.emplace(*synergies, hand, *o.projectPmds, synergyFile.string(), "--project-pmds");
 
-  std::unique_ptr<GloveLiveSource> source =
-      o.device.empty() ? replayGloveRecording(readReplay(o), o.replayRate, o.speed) : openGloveDevice(o.device, o.deviceSettings);
+  std::unique_ptr<GloveLiveSource> source = o.device.empty()
+                                                ? replayGloveRecording(readReplay(o), o.replayRate, o.speed)
+                                                : openGloveDevice(o.device, o.deviceSettings);
 
   std::vector<std::string> notes{"pmdplan glove stream: " + source->description(),
-                                 "calibration " + calibrationFile.filename().string() + ", mapping " + mappingFile.filename().string() +
-                                     ", robot " + task.robot->name()};
+                                 "calibration " + calibrationFile.filename().string() + ", mapping " +
+                                     mappingFile.filename().string() + ", robot " + task.robot->name()};
   if (filter)
     notes.push_back("filtered onto the own axes + the first " + std::to_string(filter->directions()) + " PMDs of " +
                     synergyFile.filename().string());
   const std::initializer_list<std::filesystem::path> inputs{o.replay, calibrationFile, mappingFile, synergyFile};
-  if (!o.output.empty() && !o.rawOutput.empty() && std::filesystem::weakly_canonical(o.output) == std::filesystem::weakly_canonical(o.rawOutput))
+  if (!o.output.empty() && !o.rawOutput.empty() &&
+      std::filesystem::weakly_canonical(o.output) == std::filesystem::weakly_canonical(o.rawOutput))
     throw InputError(o.output, "--raw-out", "the posture recording (-o) and the raw one (--raw-out) must be two files");
   if (!o.output.empty()) checkOutputPath(o.output, "-o", inputs);  // before the viewer folder is written
   if (!o.rawOutput.empty()) checkOutputPath(o.rawOutput, "--raw-out", inputs);
   std::unique_ptr<EventStreamServer> server;
   if (o.servePort) {
-    const std::filesystem::path folder = !o.out.empty() ? std::filesystem::path(o.out)
-                                         : !o.output.empty() ? std::filesystem::path(std::filesystem::path(o.output).replace_extension("").string() + "-viewer")
-                                                             : std::filesystem::path("glove-live-viewer");
-    writeViewerFolder(folder, liveViewerData(task, synergies ? &*synergies : nullptr, synergyFile, hand, source->description(), o.projectPmds),
+    const std::filesystem::path folder =
+        !o.out.empty() ? std::filesystem::path(o.out)
+        : !o.output.empty()
+            ? std::filesystem::path(std::filesystem::path(o.output).replace_extension("").string() + "-viewer")
+            : std::filesystem::path("glove-live-viewer");
+    writeViewerFolder(folder,
+                      liveViewerData(task, synergies ? &*synergies : nullptr, synergyFile, hand, source->description(),
+                                     o.projectPmds),
                       viewerAssetDirectory());
     server = std::make_unique<EventStreamServer>(folder, *o.servePort);
-    std::cout << "serving " << folder.string() << " at http://127.0.0.1:" << server->port() << "/ (live; Ctrl-C to stop)" << std::endl;
+    std::cout << "serving " << folder.string() << " at http://127.0.0.1:" << server->port()
+              << "/ (live; Ctrl-C to stop)" << std::endl;
   }
   std::optional<LiveCsvFile> postures, raw;
   if (!o.output.empty()) {
@@ -195,10 +214,19 @@ int run(const Options& o) {
     GloveLiveFrame frame;
     const auto stop = [] { return stopSignal != 0; };
     for (;;) {
-      if (o.frames > 0 && frames >= o.frames) { ending = "stopped after --frames " + std::to_string(o.frames); break; }
+      if (o.frames > 0 && frames >= o.frames) {
+        ending = "stopped after --frames " + std::to_string(o.frames);
+        break;
+      }
       const GloveLiveStatus status = source->next(frame, stop);
-      if (status == GloveLiveStatus::Finished) { ending = "the recording ended"; break; }
-      if (status == GloveLiveStatus::Interrupted) { ending = "stopped by signal " + std::to_string(stopSignal); break; }
+      if (status == GloveLiveStatus::Finished) {
+        ending = "the recording ended";
+        break;
+      }
+      if (status == GloveLiveStatus::Interrupted) {
+        ending = "stopped by signal " + std::to_string(stopSignal);
+        break;
+      }
       const double readMs = epochMilliseconds();
       GloveRecording one;
       one.frames.push_back(frame.raw);
@@ -213,7 +241,9 @@ int run(const Options& o) {
         raw->addRow(row);
       }
       if (server) {
-        nlohmann::json event = {{"frame", frames}, {"t", frame.timeS}, {"read_ms", readMs},
+        nlohmann::json event = {{"frame", frames},
+                                {"t", frame.timeS},
+                                {"read_ms", readMs},
                                 {"positions", std::vector<double>(posture.data(), posture.data() + posture.size())}};
         server->publish("posture", event.dump());
       }
@@ -236,26 +266,42 @@ int run(const Options& o) {
 
 std::function<int()> addGloveStreamCommand(CLI::App& glove) {
   auto o = std::make_shared<Options>();
-  CLI::App* app = glove.add_subcommand(
-      "stream", "The glove live: a CyberGlove on a serial device (or a replayed recording) to the viewer and a recording, frame by frame");
+  CLI::App* app = glove.add_subcommand("stream",
+                                       "The glove live: a CyberGlove on a serial device (or a replayed recording) to "
+                                       "the viewer and a recording, frame by frame");
   app->add_option("--device", o->device, "The glove's serial device (e.g. /dev/ttyUSB0)");
   app->add_option("--baud", o->deviceSettings.baud, "The glove's baud rate (default 115200)");
-  app->add_option("--poll-rate", o->deviceSettings.pollRateHz, "'G' requests per second (default 100; 0: the glove streams by itself)");
-  app->add_option("--timeout", o->deviceSettings.timeoutS, "Seconds without a valid reply before giving up (default 2)");
-  app->add_option("--replay", o->replay, "Play a recording (CSV, or a raw 'G'-reply stream .bin/.raw/.serial) at its recorded rate");
+  app->add_option("--poll-rate", o->deviceSettings.pollRateHz,
+                  "'G' requests per second (default 100; 0: the glove streams by itself)");
+  app->add_option("--timeout", o->deviceSettings.timeoutS,
+                  "Seconds without a valid reply before giving up (default 2)");
+  app->add_option("--replay", o->replay,
+                  "Play a recording (CSV, or a raw 'G'-reply stream .bin/.raw/.serial) at its recorded rate");
   app->add_option("--format", o->format, "With --replay: csv, serial or auto (by extension; default)");
-  app->add_option("--rate", o->replayRate, "With --replay of a recording without time_s: frames per second (default 100)");
+  app->add_option("--rate", o->replayRate,
+                  "With --replay of a recording without time_s: frames per second (default 100)");
   app->add_option("--speed", o->speed, "With --replay: playback speed (default 1: as recorded)");
-  app->add_option("--frames", o->frames, "Stop after this many frames (default 0: until the end, Ctrl-C or the device's end)");
-  app->add_option("--calibration", o->calibration, "Calibration YAML (required with --device; with --replay default REC's name with .calibration.yaml)");
-  app->add_option("--mapping", o->mapping, "Sensor -> joint mapping YAML (default data/glove/cyberglove22_to_sah.yaml)");
-  app->add_option("--task", o->task, "Task whose robot and scene the viewer shows (default can_on_table; the arm stays at its start)");
-  app->add_option("--project-pmds", o->projectPmds, "Filter each posture onto the own axes + the first K PMDs (the paper's filtering)");
-  app->add_option("--synergies", o->synergies, "Synergy model YAML for --project-pmds and the viewer (default: the robot's shipped model)");
-  app->add_option("-o,--output", o->output, "Posture recording to write (CSV: time_s and the hand joints in rad, row by row)");
-  app->add_option("--raw-out", o->rawOutput, "Raw glove recording to write (the glove CSV form, readable by synergies and --replay)");
-  app->add_option("--serve", o->servePort, "Serve the live viewer on 127.0.0.1:PORT while streaming (0: any free port)");
-  app->add_option("--out", o->out, "Viewer folder to write for --serve (default: the recording's name with -viewer, or glove-live-viewer)");
+  app->add_option("--frames", o->frames,
+                  "Stop after this many frames (default 0: until the end, Ctrl-C or the device's end)");
+  app->add_option("--calibration", o->calibration,
+                  "Calibration YAML (required with --device; with --replay default REC's name with .calibration.yaml)");
+  app->add_option("--mapping", o->mapping,
+                  "Sensor -> joint mapping YAML (default data/glove/cyberglove22_to_sah.yaml)");
+  app->add_option("--task", o->task,
+                  "Task whose robot and scene the viewer shows (default can_on_table; the arm stays at its start)");
+  app->add_option("--project-pmds", o->projectPmds,
+                  "Filter each posture onto the own axes + the first K PMDs (the paper's filtering)");
+  app->add_option("--synergies", o->synergies,
+                  "Synergy model YAML for --project-pmds and the viewer (default: the robot's shipped model)");
+  app->add_option("-o,--output", o->output,
+                  "Posture recording to write (CSV: time_s and the hand joints in rad, row by row)");
+  app->add_option("--raw-out", o->rawOutput,
+                  "Raw glove recording to write (the glove CSV form, readable by synergies and --replay)");
+  app->add_option("--serve", o->servePort,
+                  "Serve the live viewer on 127.0.0.1:PORT while streaming (0: any free port)");
+  app->add_option(
+      "--out", o->out,
+      "Viewer folder to write for --serve (default: the recording's name with -viewer, or glove-live-viewer)");
   addPackagePathOption(*app);
   return [o] { return run(*o); };
 }

@@ -16,8 +16,9 @@ std::vector<CommandEntry>& commandRegistry() {
 
 int main(int argc, char** argv) {
   using namespace pmdplan::cli;
-  CLI::App app{"pmdplan: human-like motion planning for robot hand-arm systems "
-               "with principal motion directions"};
+  CLI::App app{
+      "pmdplan: human-like motion planning for robot hand-arm systems "
+      "with principal motion directions"};
   app.require_subcommand(1);
   auto& entries = commandRegistry();
   std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.name < b.name; });

@@ -7,8 +7,8 @@
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
 #include "planner_setting_options.hpp"
-#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
@@ -47,7 +47,8 @@ int run(const Options& o) {
   if (!mode) throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected pmd or full");
   checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
-  const std::filesystem::path output = o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
+  const std::filesystem::path output =
+      o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
   checkOutputPath(output, "-o", {task.file, o.synergies});
   if (!o.csv.empty()) checkOutputPath(o.csv, "--csv", {task.file, o.synergies, output});
   const auto checkerKind = parseCheckerKind(o.checker);
@@ -58,8 +59,9 @@ int run(const Options& o) {
   if (const auto report = checking.exact().check(task.start); !report.free())
     throw InputError(task.file.string(), "start", "the start configuration is in collision: " + pairsText(report));
 
-  const std::filesystem::path synergyFile =
-      o.synergies.empty() && *mode == HandSamplingMode::Synergy ? shippedSynergyModelPath(task.robot->name()) : std::filesystem::path(o.synergies);
+  const std::filesystem::path synergyFile = o.synergies.empty() && *mode == HandSamplingMode::Synergy
+                                                ? shippedSynergyModelPath(task.robot->name())
+                                                : std::filesystem::path(o.synergies);
   std::optional<SynergyModel> synergies;
   if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
   TaskPlanningOptions options;
@@ -79,8 +81,8 @@ int run(const Options& o) {
   try {
     result = planTask(task, checking, options, [&](const PlannerProgress& p) {
       char status[160];
-      std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep, p.armHalfSize,
-                    p.samples, p.roadmapNodes, p.elapsedSeconds);
+      std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep,
+                    p.armHalfSize, p.samples, p.roadmapNodes, p.elapsedSeconds);
       progress.update(p.elapsedSeconds, parameters.timeLimit, status);
     });
   } catch (const InputError& e) {
@@ -93,21 +95,31 @@ int run(const Options& o) {
 
   std::string trajectorySummary;
   if (stats.solved()) {
-    PathFile file{task.name, o.planner, parameters.seed, task.robot->activeJointNames(), result.path, result.closingFrom,
-                  mimicRelations(*task.robot), stats};
+    PathFile file{task.name,
+                  o.planner,
+                  parameters.seed,
+                  task.robot->activeJointNames(),
+                  result.path,
+                  result.closingFrom,
+                  mimicRelations(*task.robot),
+                  stats};
     writePathFile(output, file);
     if (!o.csv.empty()) writePathCsv(o.csv, file.jointNames, file.points);
     if (o.trajectory)
-      trajectorySummary = writeTimedTrajectory(task, checking, file, {}, o.trajectory->empty() ? defaultTrajectoryFile(output) : std::filesystem::path(*o.trajectory));
+      trajectorySummary = writeTimedTrajectory(
+          task, checking, file, {},
+          o.trajectory->empty() ? defaultTrajectoryFile(output) : std::filesystem::path(*o.trajectory));
   }
   if (o.json) {
     auto document = statisticsToJson(stats, true);
     std::cout << formatJson(document) << "\n";
   } else if (stats.solved()) {
-    std::printf("%s: solved with the %s planner (seed %llu) in %.3f s + %.3f s smoothing\n", task.name.c_str(), o.planner.c_str(),
-                static_cast<unsigned long long>(parameters.seed), stats.planningTime, stats.smoothingTime);
-    std::printf("  %zu samples (hand-arm draws) from %zu arm trials, %zu roadmap nodes, max trials %zu, final rho_a %.4f\n",
-                stats.samples, stats.armTrials, stats.roadmapNodes, stats.maxTrials, stats.finalArmHalfSize);
+    std::printf("%s: solved with the %s planner (seed %llu) in %.3f s + %.3f s smoothing\n", task.name.c_str(),
+                o.planner.c_str(), static_cast<unsigned long long>(parameters.seed), stats.planningTime,
+                stats.smoothingTime);
+    std::printf(
+        "  %zu samples (hand-arm draws) from %zu arm trials, %zu roadmap nodes, max trials %zu, final rho_a %.4f\n",
+        stats.samples, stats.armTrials, stats.roadmapNodes, stats.maxTrials, stats.finalArmHalfSize);
     std::printf("  %zu path nodes, length %.3f (normalised)\n", stats.pathNodes, stats.pathLength);
     if (result.grasp)
       std::printf("  grasp of %s: approach to a pre-grasp (%s, %.1f mm from it), then closing (points %zu-%zu)\n",
@@ -121,24 +133,31 @@ int run(const Options& o) {
   return stats.solved() ? 0 : 1;
 }
 
-const CommandRegistrar registrar{"plan", "Plan a path for a task with the PMD roadmap planner", [](CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  addPackagePathOption(app);
-  app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
-  app.add_option("--planner", o->planner, "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
-  app.add_option("--checker", o->checker, "fast (default: convex parts and lane kernels, FCL only near contact; the same answers) or exact (FCL only)");
-  app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
-  app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
-  addPlannerSettingOptions(app, o->settings);
-  app.add_option("--grasp-clearance-mm", o->graspClearanceMm, "A grasp goal's derived pre-grasp clears the target by this much");
-  app.add_option("--opening-step", o->openingStep, "Step of the pre-grasp search, a fraction of the way to the open hand");
-  app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
-  app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
-  app.add_flag("--json", o->json, "Print the statistics as JSON");
-  app.add_option("--trajectory", o->trajectory, "Also write the time-optimal trajectory (default TASK.trajectory.json) and its CSV")
-      ->expected(0, 1);
-  return [o] { return run(*o); };
-}};
+const CommandRegistrar registrar{
+    "plan", "Plan a path for a task with the PMD roadmap planner", [](CLI::App& app) {
+      auto o = std::make_shared<Options>();
+      addPackagePathOption(app);
+      app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
+      app.add_option("--planner", o->planner,
+                     "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
+      app.add_option(
+          "--checker", o->checker,
+          "fast (default: convex parts and lane kernels, FCL only near contact; the same answers) or exact (FCL only)");
+      app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
+      app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
+      addPlannerSettingOptions(app, o->settings);
+      app.add_option("--grasp-clearance-mm", o->graspClearanceMm,
+                     "A grasp goal's derived pre-grasp clears the target by this much");
+      app.add_option("--opening-step", o->openingStep,
+                     "Step of the pre-grasp search, a fraction of the way to the open hand");
+      app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
+      app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
+      app.add_flag("--json", o->json, "Print the statistics as JSON");
+      app.add_option("--trajectory", o->trajectory,
+                     "Also write the time-optimal trajectory (default TASK.trajectory.json) and its CSV")
+          ->expected(0, 1);
+      return [o] { return run(*o); };
+    }};
 
 }  // namespace
 }  // namespace pmdplan::cli

@@ -28,14 +28,16 @@ void addPlannerSettingOptions(CLI::App& app, PlannerSettingOptions& settings, co
     std::string help = s.flag == "seed" && !seedHelp.empty() ? seedHelp : s.help;
     help[0] = s.symbol.empty() ? static_cast<char>(std::toupper(static_cast<unsigned char>(help[0]))) : help[0];
     if (!s.symbol.empty()) help = s.symbol + ": " + help;
-    settings.options[i] = app.add_option("--" + s.flag, settings.values[i], help + defaultText(s))->type_name(s.valueName);
+    settings.options[i] =
+        app.add_option("--" + s.flag, settings.values[i], help + defaultText(s))->type_name(s.valueName);
   }
 }
 
 PlannerParameters resolvePlannerSettings(const PlannerSettingOptions& settings, HandSamplingMode mode) {
   const auto preset = parsePlannerPreset(settings.preset);
   if (!preset)
-    throw InputError("", "--preset", "'" + settings.preset + "' is not a preset; expected one of " + knownPlannerPresetNames());
+    throw InputError("", "--preset",
+                     "'" + settings.preset + "' is not a preset; expected one of " + knownPlannerPresetNames());
   PlannerParameters parameters = PlannerParameters::preset(*preset, mode);
   const auto& table = plannerSettingTable();
   for (std::size_t i = 0; i < table.size(); ++i)

@@ -11,8 +11,8 @@ namespace pmdplan::cli {
 
 struct PlannerSettingOptions {
   std::string preset = plannerPresetName(PlannerPreset::Paper);
-  std::vector<std::string> values;      ///< per table row, the text given on the command line
-  std::vector<CLI::Option*> options;    ///< per table row; count() > 0 when given
+  std::vector<std::string> values;    ///< per table row, the text given on the command line
+  std::vector<CLI::Option*> options;  ///< per table row; count() > 0 when given
 };
 
 /// Declares --preset and one option per setting, each with the paper's default in its help.

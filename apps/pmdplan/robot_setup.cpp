@@ -12,7 +12,8 @@
 namespace pmdplan::cli {
 
 RobotModel loadWithCompanionText(const std::filesystem::path& urdf, const std::string& companionText) {
-  const auto scratch = std::filesystem::temp_directory_path() / ("pmdplan-groups-" + std::to_string(::getpid()) + ".srdf");
+  const auto scratch =
+      std::filesystem::temp_directory_path() / ("pmdplan-groups-" + std::to_string(::getpid()) + ".srdf");
   writeFileAtomically(scratch, companionText);
   try {
     RobotModel model = RobotModel::load(urdf, scratch);
@@ -38,7 +39,9 @@ Configuration homeConfiguration(const RobotModel& model, const std::string& text
     const std::string name = entry.substr(0, equals);
     const int index = model.activeIndex(name);
     if (equals == std::string::npos || index < 0)
-      throw InputError("", "--home", "'" + entry + "': expected ACTIVE_JOINT=DEGREES[,...] naming active joints of " + model.urdfPath().string());
+      throw InputError(
+          "", "--home",
+          "'" + entry + "': expected ACTIVE_JOINT=DEGREES[,...] naming active joints of " + model.urdfPath().string());
     double value = 0.0;
     try {
       std::size_t used = 0;
@@ -48,7 +51,8 @@ Configuration homeConfiguration(const RobotModel& model, const std::string& text
       throw InputError("", "--home", "'" + entry + "': expected a number of degrees after '='");
     }
     const auto& joint = model.activeJoints()[static_cast<std::size_t>(index)];
-    const bool prismatic = model.joints()[static_cast<std::size_t>(model.jointIndex(name))].type == JointType::Prismatic;
+    const bool prismatic =
+        model.joints()[static_cast<std::size_t>(model.jointIndex(name))].type == JointType::Prismatic;
     home[index] = prismatic ? value : value * std::numbers::pi / 180.0;
     if (home[index] < joint.lower - 1e-9 || home[index] > joint.upper + 1e-9)
       throw InputError("", "--home", "'" + entry + "' is outside the joint's limits");

@@ -4,11 +4,10 @@
 // `pmdplan synergies --postures P.csv --robot URDF`: the same PCA from hand joint postures.
 // `pmdplan synergies --from-graspit FILE.xml --joints j1,j2,… -o model.yaml`: imports GraspIt
 // eigengrasps. `pmdplan synergies --show model.yaml`: checks and prints a model file.
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
@@ -46,16 +45,20 @@ struct Options {
   std::string units = "deg";
 };
 
-
 std::string fileName(const std::filesystem::path& path) { return path.filename().string(); }
 
 GloveRecording readRecording(const Options& o) {
   const auto extension = std::filesystem::path(o.recording).extension();
   std::string format = o.format;
   if (format == "auto") {
-    if (extension == ".csv" || extension == ".txt") format = "csv";
-    else if (extension == ".bin" || extension == ".raw" || extension == ".serial") format = "serial";
-    else throw InputError(o.recording, "--format", "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give --format csv|serial");
+    if (extension == ".csv" || extension == ".txt")
+      format = "csv";
+    else if (extension == ".bin" || extension == ".raw" || extension == ".serial")
+      format = "serial";
+    else
+      throw InputError(
+          o.recording, "--format",
+          "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give --format csv|serial");
   }
   if (format == "csv") return readGloveCsv(o.recording);
   if (format == "serial") return readGloveSerialStream(o.recording);
@@ -82,10 +85,14 @@ nlohmann::json modelJson(const SynergyModel& model) {
   for (const auto& joint : model.joints) joints.push_back(joint.name);
   nlohmann::json directions = nlohmann::json::array();
   for (int k = 0; k < model.directionCount(); ++k) directions.push_back(vectorJson(model.directions.col(k)));
-  return {{"model_joint_names", joints},       {"own_axis_joints", model.ownAxisJoints},
-          {"orthonormal", model.orthonormal},   {"mean", vectorJson(model.mean)},
-          {"directions", directions},           {"sigma", vectorJson(model.sigma)},
-          {"variance_fraction", vectorJson(model.varianceFraction)}, {"provenance", model.provenance}};
+  return {{"model_joint_names", joints},
+          {"own_axis_joints", model.ownAxisJoints},
+          {"orthonormal", model.orthonormal},
+          {"mean", vectorJson(model.mean)},
+          {"directions", directions},
+          {"sigma", vectorJson(model.sigma)},
+          {"variance_fraction", vectorJson(model.varianceFraction)},
+          {"provenance", model.provenance}};
 }
 
 void printModel(const SynergyModel& model) {
@@ -106,9 +113,11 @@ void printModel(const SynergyModel& model) {
 }
 
 /// --plots DIR: the figures (without postures, as from --show or an import, only the variance).
-void writePlots(const Options& o, const SynergyModel& model, const Eigen::MatrixXd& postures, const JointLimits& joints) {
+void writePlots(const Options& o, const SynergyModel& model, const Eigen::MatrixXd& postures,
+                const JointLimits& joints) {
   if (o.plots.empty()) return;
-  for (const auto& file : writeSynergyPlots(o.plots, model, postures, joints)) std::cerr << "wrote " << file.string() << "\n";
+  for (const auto& file : writeSynergyPlots(o.plots, model, postures, joints))
+    std::cerr << "wrote " << file.string() << "\n";
 }
 
 int runShow(const Options& o) {
@@ -125,8 +134,10 @@ int runShow(const Options& o) {
 
 int runGraspIt(const Options& o) {
   if (o.graspitJoints.empty())
-    throw InputError("", "--joints", "GraspIt files carry no joint names: give --joints j1,j2,... (one robot joint per dimension)");
-  const GraspItImport imported = importGraspItEigengrasps(o.graspit, o.graspitJoints, RobotModel::loadByNameOrPath(o.robot).groupJoints("hand"));
+    throw InputError("", "--joints",
+                     "GraspIt files carry no joint names: give --joints j1,j2,... (one robot joint per dimension)");
+  const GraspItImport imported =
+      importGraspItEigengrasps(o.graspit, o.graspitJoints, RobotModel::loadByNameOrPath(o.robot).groupJoints("hand"));
   if (!o.output.empty()) saveSynergyModel(o.output, imported.model);
   writePlots(o, imported.model, {}, imported.model.joints);
   if (o.json) {
@@ -144,8 +155,10 @@ int runGraspIt(const Options& o) {
 
 int runPostures(const Options& o) {
   const JointLimits hand = RobotModel::loadByNameOrPath(o.robot).groupJoints("hand");
-  if (o.units != "deg" && o.units != "rad") throw InputError("", "--units", "expected deg or rad, got '" + o.units + "'");
-  const Eigen::MatrixXd postures = readPostureCsv(o.postures, hand, o.units == "deg" ? PostureUnit::Degrees : PostureUnit::Radians);
+  if (o.units != "deg" && o.units != "rad")
+    throw InputError("", "--units", "expected deg or rad, got '" + o.units + "'");
+  const Eigen::MatrixXd postures =
+      readPostureCsv(o.postures, hand, o.units == "deg" ? PostureUnit::Degrees : PostureUnit::Radians);
   SynergyFitOptions fitOptions;
   fitOptions.ownAxisJoints = ownAxisJoints(o, hand);
   const std::string provenance = "hand postures " + fileName(o.postures) + " (" + std::to_string(postures.rows()) +
@@ -155,8 +168,11 @@ int runPostures(const Options& o) {
   if (!o.output.empty()) saveSynergyModel(o.output, fit.model);
   writePlots(o, fit.model, postures, hand);
   if (o.json) {
-    nlohmann::json out = {{"frames", fit.frames}, {"pca_joint_names", fit.pcaJoints}, {"constant_joints", fit.constantJoints},
-                          {"cumulative_variance", vectorJson(fit.cumulativeVariance)}, {"model", modelJson(fit.model)}};
+    nlohmann::json out = {{"frames", fit.frames},
+                          {"pca_joint_names", fit.pcaJoints},
+                          {"constant_joints", fit.constantJoints},
+                          {"cumulative_variance", vectorJson(fit.cumulativeVariance)},
+                          {"model", modelJson(fit.model)}};
     if (!o.output.empty()) out["model_file"] = o.output;
     std::cout << out.dump(2) << "\n";
     return 0;
@@ -164,8 +180,9 @@ int runPostures(const Options& o) {
   std::cout << o.postures << ": " << fit.frames << " postures of " << hand.size() << " hand joints\n";
   printModel(fit.model);
   if (fitOptions.ownAxisJoints.empty())
-    std::cout << "note: no own-axis joint; the paper keeps the thumb's opposition joint out of the PCA as an axis of its "
-                 "own: name it with --own-axis JOINT\n";
+    std::cout
+        << "note: no own-axis joint; the paper keeps the thumb's opposition joint out of the PCA as an axis of its "
+           "own: name it with --own-axis JOINT\n";
   if (!o.output.empty()) std::cout << "wrote " << o.output << "\n";
   return 0;
 }
@@ -182,20 +199,23 @@ int runRecording(const Options& o) {
                            " is not beside the recording; pass --calibration FILE");
   }
   const GloveCalibration calibration = loadGloveCalibration(calibrationPath);
-  const std::filesystem::path mappingPath = o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
+  const std::filesystem::path mappingPath =
+      o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
   const HandMapping mapping = loadHandMapping(mappingPath);
   SynergyFitOptions fitOptions;
   fitOptions.ownAxisJoints = ownAxisJoints(o, hand);
   const bool synthetic = !recording.notes.empty() && recording.notes.front().rfind("SYNTHETIC", 0) == 0;
   // File names only, so a model's provenance does not depend on where the files were.
-  const std::string provenance = std::string(synthetic ? "SYNTHETIC operator data (not human): " : "") + "glove recording " +
-                                 fileName(o.recording) + " (" + std::to_string(recording.frameCount()) +
-                                 " frames), calibration " + fileName(calibrationPath) + ", mapping " + fileName(mappingPath) +
+  const std::string provenance = std::string(synthetic ? "SYNTHETIC operator data (not human): " : "") +
+                                 "glove recording " + fileName(o.recording) + " (" +
+                                 std::to_string(recording.frameCount()) + " frames), calibration " +
+                                 fileName(calibrationPath) + ", mapping " + fileName(mappingPath) +
                                  "; PCA over joints normalised to [0, 1] by the limits of " + o.robot;
   const RecordingAnalysis analysis = analyseRecording(recording, calibration, mapping, hand, fitOptions, provenance);
   const SynergyFit& fit = analysis.fit;
   if (!o.output.empty()) saveSynergyModel(o.output, fit.model);
-  if (!o.plots.empty()) writePlots(o, fit.model, mapToJoints(calibrate(recording, calibration), mapping, hand).postures, hand);
+  if (!o.plots.empty())
+    writePlots(o, fit.model, mapToJoints(calibrate(recording, calibration), mapping, hand).postures, hand);
 
   const auto varying = [&](const std::string& name) -> Eigen::Index {
     for (std::size_t i = 0; i < fit.varyingJoints.size(); ++i)
@@ -218,7 +238,8 @@ int runRecording(const Options& o) {
 
   if (o.json) {
     nlohmann::json correlation = nlohmann::json::array();
-    for (Eigen::Index i = 0; i < fit.correlation.rows(); ++i) correlation.push_back(vectorJson(fit.correlation.row(i).transpose()));
+    for (Eigen::Index i = 0; i < fit.correlation.rows(); ++i)
+      correlation.push_back(vectorJson(fit.correlation.row(i).transpose()));
     nlohmann::json clampedPerJoint = nlohmann::json::object();
     for (std::size_t j = 0; j < hand.size(); ++j) clampedPerJoint[hand[j].name] = analysis.clampedPerJoint[j];
     nlohmann::json out = {{"frames", fit.frames},
@@ -239,9 +260,11 @@ int runRecording(const Options& o) {
 
   std::cout << o.recording << ": " << fit.frames << " frames (" << recording.dataLocation << ")"
             << (synthetic ? ", SYNTHETIC operator data (not human)" : "") << "\n"
-            << "calibration " << calibrationPath.string() << ", mapping " << mappingPath.string() << ", robot " << o.robot << "\n";
+            << "calibration " << calibrationPath.string() << ", mapping " << mappingPath.string() << ", robot "
+            << o.robot << "\n";
   std::printf("%lld joint values clamped at a limit (%.2f %% of %d frames x %zu joints)\n", analysis.clampedValues,
-              100.0 * static_cast<double>(analysis.clampedValues) / (static_cast<double>(fit.frames) * static_cast<double>(hand.size())),
+              100.0 * static_cast<double>(analysis.clampedValues) /
+                  (static_cast<double>(fit.frames) * static_cast<double>(hand.size())),
               fit.frames, hand.size());
   std::cout << "PCA over " << fit.pcaJoints.size() << " joints normalised to [0, 1]";
   if (!fitOptions.ownAxisJoints.empty()) {
@@ -254,8 +277,10 @@ int runRecording(const Options& o) {
   }
   std::cout << "\n\n PMDs   variance %   cumulative %     (paper, Fig. 10: 42.19, 77.12, 84.71 % for 1, 2, 3)\n";
   for (int k = 0; k < fit.model.directionCount(); ++k)
-    std::printf(" %4d   %10.2f   %12.2f\n", k + 1, 100 * fit.model.varianceFraction(k), 100 * fit.cumulativeVariance(k));
-  std::cout << "\nCorrelations of the paper's Fig. 7 joint pairs (r here; [r in the paper's signs, flexion negative])\n";
+    std::printf(" %4d   %10.2f   %12.2f\n", k + 1, 100 * fit.model.varianceFraction(k),
+                100 * fit.cumulativeVariance(k));
+  std::cout
+      << "\nCorrelations of the paper's Fig. 7 joint pairs (r here; [r in the paper's signs, flexion negative])\n";
   for (const auto& pair : pairs)
     std::printf("  %-16s ~ %-16s %+6.3f  [%+6.3f]  paper: %s\n", pair["first"].get<std::string>().c_str(),
                 pair["second"].get<std::string>().c_str(), pair["r"].get<double>(), pair["r_paper_signs"].get<double>(),
@@ -295,18 +320,25 @@ const CommandRegistrar registrar{
       app.add_option("recording", o->recording, "Glove recording: CSV, or a raw 'G'-reply stream (.bin/.raw/.serial)");
       app.add_option("--format", o->format, "Recording format: csv, serial or auto (by extension; default)");
       app.add_option("--calibration", o->calibration, "Calibration YAML (default: REC's name with .calibration.yaml)");
-      app.add_option("--mapping", o->mapping, "Sensor -> joint mapping YAML (default data/glove/cyberglove22_to_sah.yaml)");
+      app.add_option("--mapping", o->mapping,
+                     "Sensor -> joint mapping YAML (default data/glove/cyberglove22_to_sah.yaml)");
       app.add_option("--robot", o->robot, "Built-in robot name or .urdf file (default sah_tx90)");
-      app.add_option("--own-axis", o->ownAxis, "Joints kept as axes of their own (default thumb_base if the hand has it; 'none')")
+      app.add_option("--own-axis", o->ownAxis,
+                     "Joints kept as axes of their own (default thumb_base if the hand has it; 'none')")
           ->delimiter(',');
       app.add_option("-o,--output", o->output, "Synergy model file to write (YAML)");
       app.add_flag("--json", o->json, "Print JSON instead of text");
-      app.add_option("--from-graspit", o->graspit, "Import a GraspIt eigengrasp XML file instead of reading a recording");
-      app.add_option("--joints", o->graspitJoints, "With --from-graspit: the robot joint of each dimension, in order")->delimiter(',');
+      app.add_option("--from-graspit", o->graspit,
+                     "Import a GraspIt eigengrasp XML file instead of reading a recording");
+      app.add_option("--joints", o->graspitJoints, "With --from-graspit: the robot joint of each dimension, in order")
+          ->delimiter(',');
       app.add_option("--show", o->show, "Check and print a synergy model file");
-      app.add_option("--postures", o->postures, "PCA of hand joint postures from a CSV (header: hand joint names; no glove)");
+      app.add_option("--postures", o->postures,
+                     "PCA of hand joint postures from a CSV (header: hand joint names; no glove)");
       app.add_option("--units", o->units, "With --postures: deg (default) or rad");
-      app.add_option("--plots", o->plots, "Write the figures as SVG into this folder (Fig. 10 variance; Fig. 7 joint pairs from a recording)");
+      app.add_option(
+          "--plots", o->plots,
+          "Write the figures as SVG into this folder (Fig. 10 variance; Fig. 7 joint pairs from a recording)");
       return [o] { return run(*o); };
     }};
 

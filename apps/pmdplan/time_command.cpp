@@ -42,22 +42,25 @@ int run(const Options& o) {
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
   if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
-  const std::filesystem::path output = o.output.empty() ? defaultTrajectoryFile(o.path) : std::filesystem::path(o.output);
+  const std::filesystem::path output =
+      o.output.empty() ? defaultTrajectoryFile(o.path) : std::filesystem::path(o.output);
   std::printf("%s: timing %zu waypoints\n", o.path.c_str(), checked.points.size());
   std::fputs(writeTimedTrajectory(task, checking, checked, o.trajectory, output).c_str(), stdout);
   return 0;
 }
 
-const CommandRegistrar registrar{"time", "Time a path optimally under the joints' velocity and acceleration limits", [](CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan")->required();
-  app.add_option("--task", o->task, "Task name or file (default: the task the path file names)");
-  app.add_option("-o,--output", o->output, "Trajectory file to write (default PATH's name with .trajectory.json; the CSV beside it)");
-  app.add_option("--checker", o->checker, "Checker for the blends: fast (default) or exact");
-  app.add_option("--tolerance-mm", o->toleranceMm, "Blend check tolerance in millimetres (default 1)");
-  addTrajectoryOptions(app, o->trajectory);
-  return [o] { return run(*o); };
-}};
+const CommandRegistrar registrar{
+    "time", "Time a path optimally under the joints' velocity and acceleration limits", [](CLI::App& app) {
+      auto o = std::make_shared<Options>();
+      app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan")->required();
+      app.add_option("--task", o->task, "Task name or file (default: the task the path file names)");
+      app.add_option("-o,--output", o->output,
+                     "Trajectory file to write (default PATH's name with .trajectory.json; the CSV beside it)");
+      app.add_option("--checker", o->checker, "Checker for the blends: fast (default) or exact");
+      app.add_option("--tolerance-mm", o->toleranceMm, "Blend check tolerance in millimetres (default 1)");
+      addTrajectoryOptions(app, o->trajectory);
+      return [o] { return run(*o); };
+    }};
 
 }  // namespace
 }  // namespace pmdplan::cli

@@ -27,6 +27,6 @@ std::filesystem::path defaultTrajectoryFile(const std::filesystem::path& pathFil
 
 /// Times `path`, writes `output` and its CSV; returns a line to print (duration, blends, checks).
 std::string writeTimedTrajectory(const Task& task, CollisionChecking& checking, const PathFile& path,
-                          const TrajectoryOutputOptions& options, const std::filesystem::path& output);
+                                 const TrajectoryOutputOptions& options, const std::filesystem::path& output);
 
 }  // namespace pmdplan::cli

@@ -1,13 +1,12 @@
 // `pmdplan validate TASK PATH.json`: an independent check of a path with the exact checker; a
 // grasp path's closing phase with the grasp rule (hand-target contact allowed, nothing else).
-#include <nlohmann/json.hpp>
-
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
-#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/world/task.hpp"
@@ -27,7 +26,8 @@ int run(const Options& o) {
   const Task task = loadTaskByName(o.task);
   const PathFile file = readPathFile(o.path);
   if (file.jointNames != task.robot->activeJointNames())
-    throw InputError(o.path, "joint_names", "the path's joints do not match the active joints of robot '" + task.robot->name() + "'");
+    throw InputError(o.path, "joint_names",
+                     "the path's joints do not match the active joints of robot '" + task.robot->name() + "'");
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
   const auto result = validateTaskPath(checker, segments, task, file.points, file.closingFrom);
@@ -36,29 +36,34 @@ int run(const Options& o) {
     for (const auto& [a, b] : result.collisions.pairs) pairs.push_back({a, b});
     std::cout << nlohmann::json{{"valid", result.valid},
                                 {"states_checked", result.statesChecked},
-                                {"closing_from", file.closingFrom ? nlohmann::json(*file.closingFrom) : nlohmann::json()},
+                                {"closing_from",
+                                 file.closingFrom ? nlohmann::json(*file.closingFrom) : nlohmann::json()},
                                 {"collisions", pairs},
-                                {"problems", result.problems}}.dump(2)
+                                {"problems", result.problems}}
+                     .dump(2)
               << "\n";
   } else {
     std::cout << o.path << ": " << (result.valid ? "valid" : "INVALID") << " (" << file.points.size() << " points, "
               << result.statesChecked << " states checked at " << o.toleranceMm << " mm"
-              << (file.closingFrom ? "; approach to point " + std::to_string(*file.closingFrom) + ", then closing on the target" : "")
+              << (file.closingFrom
+                      ? "; approach to point " + std::to_string(*file.closingFrom) + ", then closing on the target"
+                      : "")
               << ")\n";
     for (const auto& p : result.problems) std::cout << "  " << p << "\n";
   }
   return result.valid ? 0 : 1;
 }
 
-const CommandRegistrar registrar{"validate", "Check a path file against a task with the exact checker", [](CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  addPackagePathOption(app);
-  app.add_option("task", o->task, "Built-in task name or task file")->required();
-  app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan")->required();
-  app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
-  app.add_flag("--json", o->json, "Print JSON");
-  return [o] { return run(*o); };
-}};
+const CommandRegistrar registrar{
+    "validate", "Check a path file against a task with the exact checker", [](CLI::App& app) {
+      auto o = std::make_shared<Options>();
+      addPackagePathOption(app);
+      app.add_option("task", o->task, "Built-in task name or task file")->required();
+      app.add_option("path", o->path, "Path file (JSON) written by pmdplan plan")->required();
+      app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
+      app.add_flag("--json", o->json, "Print JSON");
+      return [o] { return run(*o); };
+    }};
 
 }  // namespace
 }  // namespace pmdplan::cli

@@ -6,10 +6,10 @@
 namespace pmdplan::cli {
 namespace {
 const CommandRegistrar registrar{"version", "Print the pmdplan version", [](CLI::App&) {
-  return [] {
-    std::cout << "pmdplan 0.1.0\n";
-    return 0;
-  };
-}};
+                                   return [] {
+                                     std::cout << "pmdplan 0.1.0\n";
+                                     return 0;
+                                   };
+                                 }};
 }  // namespace
 }  // namespace pmdplan::cli

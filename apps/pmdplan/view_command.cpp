@@ -13,8 +13,8 @@
 #include "pmdplan/io/path_file.hpp"
 #include "pmdplan/io/path_robot_match.hpp"
 #include "pmdplan/io/path_set.hpp"
-#include "pmdplan/io/trajectory_file.hpp"
 #include "pmdplan/io/static_file_server.hpp"
+#include "pmdplan/io/trajectory_file.hpp"
 #include "pmdplan/io/viewer_data.hpp"
 #include "pmdplan/io/viewer_folder.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
@@ -43,7 +43,8 @@ std::filesystem::path defaultOutput(const Options& o) {
 std::vector<std::filesystem::path> inputFiles(const Options& o) {
   const bool folder = std::filesystem::is_directory(o.paths.front());
   if (folder && o.paths.size() > 1)
-    throw InputError(o.paths.front(), "path", "is a folder: view one bench folder (with --seed N) or path files, not both");
+    throw InputError(o.paths.front(), "path",
+                     "is a folder: view one bench folder (with --seed N) or path files, not both");
   if (folder && !o.seed)
     throw InputError(o.paths.front(), "--seed", "is a folder: give --seed N to view its paths of one seed");
   if (!folder && o.seed) throw InputError("", "--seed", "picks the paths of a bench folder; expected PATH to be one");
@@ -74,8 +75,9 @@ int run(const Options& o) {
       // Another task than the path's own: only if the path starts and ends where that task does.
       const auto warnings = pathEndWarnings(task, pathConfigurations(input.path, *task.robot, input.file.string()));
       if (!warnings.empty())
-        throw InputError(input.file.string(), "task", "the path was planned for task '" + input.path.task + "', not --task " +
-                                                          task.name + ": " + warnings.front() + "; view it with its own task");
+        throw InputError(input.file.string(), "task",
+                         "the path was planned for task '" + input.path.task + "', not --task " + task.name + ": " +
+                             warnings.front() + "; view it with its own task");
     }
   std::filesystem::path synergyFile = o.synergies;
   if (synergyFile.empty() && std::filesystem::exists(defaultSynergyModelPath(task.robot->name())))
@@ -85,7 +87,8 @@ int run(const Options& o) {
 
   ViewerDataParameters parameters;
   parameters.trajectory = trajectory ? &*trajectory : nullptr;
-  ViewerData data = viewerData(task, path, synergies ? &*synergies : nullptr, {inputs.front().file, synergyFile}, parameters);
+  ViewerData data =
+      viewerData(task, path, synergies ? &*synergies : nullptr, {inputs.front().file, synergyFile}, parameters);
   addOverlayPaths(data, task, inputs, parameters);
   const std::filesystem::path out = o.out.empty() ? defaultOutput(o) : std::filesystem::path(o.out);
   writeViewerFolder(out, data, viewerAssetDirectory());
@@ -97,20 +100,24 @@ int run(const Options& o) {
             << (out / "index.html").string() << " in a browser\n";
   if (!o.servePort) return 0;
   StaticFileServer server(out, *o.servePort);
-  std::cout << "serving " << out.string() << " at http://127.0.0.1:" << server.port() << "/ (Ctrl-C to stop)" << std::endl;
+  std::cout << "serving " << out.string() << " at http://127.0.0.1:" << server.port() << "/ (Ctrl-C to stop)"
+            << std::endl;
   server.serveForever();
 }
 
 const CommandRegistrar registrar{
-    "view", "Write a web viewer folder for paths of one task (robot, obstacles, animation, synergies); optionally serve it",
+    "view",
+    "Write a web viewer folder for paths of one task (robot, obstacles, animation, synergies); optionally serve it",
     [](CLI::App& app) {
       auto o = std::make_shared<Options>();
       addPackagePathOption(app);
-      app.add_option("path", o->paths,
-                     "Path files (JSON) written by pmdplan plan, or trajectory files (plan --trajectory, time), all of one "
-                     "task; or a folder written by pmdplan bench --paths (with --seed)")
+      app.add_option(
+             "path", o->paths,
+             "Path files (JSON) written by pmdplan plan, or trajectory files (plan --trajectory, time), all of one "
+             "task; or a folder written by pmdplan bench --paths (with --seed)")
           ->required();
-      app.add_option("--seed", o->seed, "With a bench folder: view its paths of this seed (pmd, full, then the others)");
+      app.add_option("--seed", o->seed,
+                     "With a bench folder: view its paths of this seed (pmd, full, then the others)");
       app.add_option("--out", o->out, "Viewer folder to write (default: PATH's name with -viewer, beside it)");
       app.add_option("--serve", o->servePort, "Serve the folder on 127.0.0.1:PORT until stopped (0: any free port)");
       app.add_option("--task", o->task, "Task name or file (default: the task the path file names)");

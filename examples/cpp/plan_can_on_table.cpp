@@ -1,12 +1,12 @@
 // Plans the built-in task can_on_table with the paper's planner through the installed library:
 // load the task and the robot's shipped synergy model, build the fast collision checks, plan;
 // then the same planner once more as an OMPL planner (OmplPmdPlanner) through OMPL's SimpleSetup.
-#include <cstdio>
-#include <memory>
-
 #include <ompl/base/ScopedState.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/util/Console.h>
+
+#include <cstdio>
+#include <memory>
 
 #include "pmdplan/bench/ompl_pmd_planner.hpp"
 #include "pmdplan/bench/ompl_task_space.hpp"
@@ -19,7 +19,8 @@
 int main() {
   using namespace pmdplan;
   const Task task = loadTaskByName("can_on_table");
-  const auto synergies = std::make_shared<const SynergyModel>(loadSynergyModel(defaultSynergyModelPath(task.robot->name())));
+  const auto synergies =
+      std::make_shared<const SynergyModel>(loadSynergyModel(defaultSynergyModelPath(task.robot->name())));
   CollisionChecking checking(task, CheckerKind::Fast);
   TaskPlanningOptions options;
   options.synergies = synergies.get();
@@ -37,9 +38,10 @@ int main() {
   setOmplState(space, task.start, start.get());
   setOmplState(space, task.goal, goal.get());
   setup.setStartAndGoalStates(start, goal);
-  setup.setPlanner(std::make_shared<OmplPmdPlanner>(omplSpace.spaceInformation, space, HandSamplingMode::Synergy, synergies));
+  setup.setPlanner(
+      std::make_shared<OmplPmdPlanner>(omplSpace.spaceInformation, space, HandSamplingMode::Synergy, synergies));
   const bool omplSolved = setup.solve(30.0) == ompl::base::PlannerStatus::EXACT_SOLUTION;
-  std::printf("OMPL %s: %s, %zu path states\n", setup.getPlanner()->getName().c_str(), omplSolved ? "solved" : "not solved",
-              omplSolved ? setup.getSolutionPath().getStateCount() : 0u);
+  std::printf("OMPL %s: %s, %zu path states\n", setup.getPlanner()->getName().c_str(),
+              omplSolved ? "solved" : "not solved", omplSolved ? setup.getSolutionPath().getStateCount() : 0u);
   return result.statistics.solved() && omplSolved ? 0 : 1;
 }

@@ -4,9 +4,9 @@
 // load of a shared machine does not inflate).
 //   plan_call_reference TASK RUNS
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <string>
 
 #include "pmdplan/collision/collision_checking.hpp"

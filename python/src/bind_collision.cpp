@@ -8,8 +8,8 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan::python {
@@ -66,21 +66,27 @@ CheckerKind parseCheckerOption(const std::string& name) { return checkerKindFrom
 double parseToleranceOption(double toleranceMm) { return toleranceMetres(toleranceMm); }
 
 void bindCollision(py::module_& m) {
-  py::class_<PyCollisionChecker, std::shared_ptr<PyCollisionChecker>>(m, "CollisionChecker",
-                                 "The collision checks of one task: 'fast' (default; the same answers as 'exact') or 'exact' (FCL).\n"
-                                 "Segments are straight in joint space, free up to tolerance_mm (no robot point moves more between\n"
-                                 "two checked states).")
+  py::class_<PyCollisionChecker, std::shared_ptr<PyCollisionChecker>>(
+      m, "CollisionChecker",
+      "The collision checks of one task: 'fast' (default; the same answers as 'exact') or 'exact' (FCL).\n"
+      "Segments are straight in joint space, free up to tolerance_mm (no robot point moves more between\n"
+      "two checked states).")
       .def(py::init([](const PyTask& task, const std::string& checker, double toleranceMm) {
              auto c = std::make_shared<PyCollisionChecker>();
              c->task = task.task;
              c->world = task.world;
-             c->checking = std::make_unique<CollisionChecking>(*c->task, checkerKindFrom(checker), toleranceMetres(toleranceMm));
+             c->checking =
+                 std::make_unique<CollisionChecking>(*c->task, checkerKindFrom(checker), toleranceMetres(toleranceMm));
              return c;
            }),
            py::arg("task"), py::arg("checker") = "fast", py::arg("tolerance_mm") = 1.0)
-      .def_property_readonly("task", [](const PyCollisionChecker& c) { return PyTask{c.task, c.world}; })
+      .def_property_readonly("task",
+                             [](const PyCollisionChecker& c) {
+                               return PyTask{c.task, c.world};
+                             })
       .def_property_readonly("checker", [](const PyCollisionChecker& c) { return checkerKindName(c.checking->kind()); })
-      .def_property_readonly("tolerance_mm", [](const PyCollisionChecker& c) { return c.checking->tolerance() * 1000.0; })
+      .def_property_readonly("tolerance_mm",
+                             [](const PyCollisionChecker& c) { return c.checking->tolerance() * 1000.0; })
       .def(
           "is_valid",
           [](PyCollisionChecker& c, py::handle q) {
@@ -96,7 +102,8 @@ void bindCollision(py::module_& m) {
               return checking.exact().check(configuration).pairs;
             });
           },
-          py::arg("configuration"), "Every colliding pair (link - link or link - obstacle names), by the exact checker; [] when free.")
+          py::arg("configuration"),
+          "Every colliding pair (link - link or link - obstacle names), by the exact checker; [] when free.")
       .def(
           "check_batch",
           [](PyCollisionChecker& c, py::handle configurations) {
@@ -107,7 +114,8 @@ void bindCollision(py::module_& m) {
             for (std::size_t i = 0; i < valid.size(); ++i) out(static_cast<py::ssize_t>(i)) = valid[i];
             return result;
           },
-          py::arg("configurations"), "Validity of every row of an (n, dof) array, as a bool array (the fast checker batches them).")
+          py::arg("configurations"),
+          "Validity of every row of an (n, dof) array, as a bool array (the fast checker batches them).")
       .def(
           "is_segment_free",
           [](PyCollisionChecker& c, py::handle from, py::handle to) {
@@ -115,7 +123,8 @@ void bindCollision(py::module_& m) {
             const Configuration b = jointValuesFrom(jointsOf(c), to, "to");
             py::gil_scoped_release release;
             std::lock_guard lock(c.mutex);
-            return c.checking->states().isValid(a) && c.checking->states().isValid(b) && c.checking->motions().isValid(a, b);
+            return c.checking->states().isValid(a) && c.checking->states().isValid(b) &&
+                   c.checking->motions().isValid(a, b);
           },
           py::arg("from_configuration"), py::arg("to_configuration"),
           "True if both ends and the straight joint-space segment between them are free at the tolerance.")
@@ -131,11 +140,15 @@ void bindCollision(py::module_& m) {
             }
             return true;
           },
-          py::arg("path"), "True if every point of an (n, dof) path and every segment between consecutive points is free.")
-      .def_property_readonly("state_checks", [](PyCollisionChecker& c) {
-        std::lock_guard lock(c.mutex);
-        return c.checking->states().checkCount();
-      }, "Configurations checked so far.")
+          py::arg("path"),
+          "True if every point of an (n, dof) path and every segment between consecutive points is free.")
+      .def_property_readonly(
+          "state_checks",
+          [](PyCollisionChecker& c) {
+            std::lock_guard lock(c.mutex);
+            return c.checking->states().checkCount();
+          },
+          "Configurations checked so far.")
       .def("__repr__", [](const PyCollisionChecker& c) {
         return "<pmdplan.CollisionChecker " + checkerKindName(c.checking->kind()) + " for " + c.task->name + ">";
       });

@@ -66,17 +66,22 @@ void bindPlannerSettings(py::module_& m) {
           "arm_box_growth", [](const PlannerParameters& p) { return growthName(p.armBoxGrowth); },
           [](PlannerParameters& p, const std::string& name) { p.armBoxGrowth = growthFrom(name); },
           "'factorial' (rho_a(k) = k rho_a(k-1), Algorithm 4 read literally) or 'linear' (k rho_a(1)).")
-      .def_readwrite("neighbour_count", &PlannerParameters::neighbourCount, "K: most neighbours a new sample is connected to (10).")
+      .def_readwrite("neighbour_count", &PlannerParameters::neighbourCount,
+                     "K: most neighbours a new sample is connected to (10).")
       .def_readwrite("neighbour_threshold_factor", &PlannerParameters::neighbourThresholdFactor,
                      "Neighbour radius as a multiple of d(start, goal) (1, the paper's; docs/deviations.md).")
       .def_readwrite("arm_trials", &PlannerParameters::armTrials, "n_A: arm configurations per hypercube.")
       .def_readwrite("hand_trials", &PlannerParameters::handTrials, "n_H: hand configurations per arm configuration.")
-      .def_readwrite("min_sweep_visits", &PlannerParameters::minSweepVisits, "Hypercube visits a sweep makes before rho_a grows (10).")
-      .def_readwrite("max_samples", &PlannerParameters::maxSamples, "N: samples (hand-arm draws) after which the run fails.")
-      .def_readwrite("time_limit", &PlannerParameters::timeLimit, "Wall-clock bound of the roadmap construction, seconds.")
+      .def_readwrite("min_sweep_visits", &PlannerParameters::minSweepVisits,
+                     "Hypercube visits a sweep makes before rho_a grows (10).")
+      .def_readwrite("max_samples", &PlannerParameters::maxSamples,
+                     "N: samples (hand-arm draws) after which the run fails.")
+      .def_readwrite("time_limit", &PlannerParameters::timeLimit,
+                     "Wall-clock bound of the roadmap construction, seconds.")
       .def_readwrite("seed", &PlannerParameters::seed, "Seed of the run's random numbers.")
       .def_property(
-          "kappa", [](const PlannerParameters& p) { return p.pmdBox.kappa; }, [](PlannerParameters& p, double v) { p.pmdBox.kappa = v; },
+          "kappa", [](const PlannerParameters& p) { return p.pmdBox.kappa; },
+          [](PlannerParameters& p, double v) { p.pmdBox.kappa = v; },
           "Half-width of the PMD hand box along PMD i, in standard deviations sigma_i (2).")
       .def_property(
           "max_pmds", [](const PlannerParameters& p) { return p.pmdBox.maxDirections; },
@@ -85,9 +90,10 @@ void bindPlannerSettings(py::module_& m) {
       .def("check", &checkPlannerParameters, "Raises InputError (the CLI's message) for a value out of range.")
       .def("__repr__", [](const PlannerParameters& p) {
         std::ostringstream text;
-        text << "PlannerSettings(initial_arm_half_size=" << p.initialArmHalfSize << ", arm_box_growth='" << growthName(p.armBoxGrowth)
-             << "', neighbour_count=" << p.neighbourCount << ", neighbour_threshold_factor=" << p.neighbourThresholdFactor
-             << ", arm_trials=" << p.armTrials << ", hand_trials=" << p.handTrials << ", min_sweep_visits=" << p.minSweepVisits
+        text << "PlannerSettings(initial_arm_half_size=" << p.initialArmHalfSize << ", arm_box_growth='"
+             << growthName(p.armBoxGrowth) << "', neighbour_count=" << p.neighbourCount
+             << ", neighbour_threshold_factor=" << p.neighbourThresholdFactor << ", arm_trials=" << p.armTrials
+             << ", hand_trials=" << p.handTrials << ", min_sweep_visits=" << p.minSweepVisits
              << ", max_samples=" << p.maxSamples << ", time_limit=" << p.timeLimit << ", seed=" << p.seed
              << ", smooth=" << (p.smooth ? "True" : "False") << ")";
         return text.str();

@@ -52,7 +52,8 @@ void requireFreeEnds(const Task& task, PyCollisionChecker& checker) {
   for (const auto& [label, q] : {std::pair{"start", &task.start}, std::pair{"goal", &task.goal}}) {
     const auto report = checker.checking->exact().check(*q);
     if (!report.free())
-      throw InputError(task.file.string(), label, std::string("the ") + label + " configuration is in collision: " + pairsText(report));
+      throw InputError(task.file.string(), label,
+                       std::string("the ") + label + " configuration is in collision: " + pairsText(report));
   }
 }
 
@@ -61,27 +62,31 @@ std::shared_ptr<PyCollisionChecker> checkerFor(const PyTask& task, py::handle ch
   if (py::isinstance<PyCollisionChecker>(checker)) {
     auto given = checker.cast<std::shared_ptr<PyCollisionChecker>>();
     if (given->world != task.world)
-      throw InputError("", "checker", "the CollisionChecker was made for another robot, base or obstacles than this task's");
+      throw InputError("", "checker",
+                       "the CollisionChecker was made for another robot, base or obstacles than this task's");
     return given;
   }
-  if (!py::isinstance<py::str>(checker)) throw InputError("", "--checker", "expected 'fast', 'exact' or a pmdplan.CollisionChecker");
+  if (!py::isinstance<py::str>(checker))
+    throw InputError("", "--checker", "expected 'fast', 'exact' or a pmdplan.CollisionChecker");
   auto made = std::make_shared<PyCollisionChecker>();
   made->task = task.task;
   made->world = task.world;
-  made->checking = std::make_unique<CollisionChecking>(*task.task, parseCheckerOption(checker.cast<std::string>()), parseToleranceOption(toleranceMm));
+  made->checking = std::make_unique<CollisionChecking>(*task.task, parseCheckerOption(checker.cast<std::string>()),
+                                                       parseToleranceOption(toleranceMm));
   return made;
 }
 
 /// The synergy model argument: a SynergyModel, a model file, or None for the robot's shipped one.
 PySynergyModel synergiesFor(const Task& task, py::handle synergies) {
   if (py::isinstance<PySynergyModel>(synergies)) return synergies.cast<PySynergyModel>();
-  const std::filesystem::path file = synergies.is_none() ? defaultSynergyModelPath(task.robot->name())
-                                                         : std::filesystem::path(py::str(synergies).cast<std::string>());
+  const std::filesystem::path file = synergies.is_none()
+                                         ? defaultSynergyModelPath(task.robot->name())
+                                         : std::filesystem::path(py::str(synergies).cast<std::string>());
   return PySynergyModel{std::make_shared<const SynergyModel>(loadSynergyModel(file)), file.string()};
 }
 
-PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const PlannerEntry& entry, py::handle settings, py::handle synergies,
-                     std::optional<std::uint64_t> seed, std::optional<double> timeLimit) {
+PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const PlannerEntry& entry, py::handle settings,
+                     py::handle synergies, std::optional<std::uint64_t> seed, std::optional<double> timeLimit) {
   std::optional<PySynergyModel> model;
   if (entry.mode == HandSamplingMode::Synergy) model = synergiesFor(*task.task, synergies);
   TaskPlanningOptions options;
@@ -108,8 +113,8 @@ PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const Plan
   return result;
 }
 
-PyPlanResult planOmpl(const PyTask& task, PyCollisionChecker& checker, const PlannerEntry& entry, std::optional<std::uint64_t> seed,
-                      std::optional<double> timeLimit) {
+PyPlanResult planOmpl(const PyTask& task, PyCollisionChecker& checker, const PlannerEntry& entry,
+                      std::optional<std::uint64_t> seed, std::optional<double> timeLimit) {
   const std::uint64_t runSeed = seed.value_or(1);
   const double limit = timeLimit.value_or(defaultTimeLimit());
   if (runSeed == 0) throw InputError("", "--seed", "OMPL ignores seed 0; expected a positive seed");
@@ -121,8 +126,8 @@ PyPlanResult planOmpl(const PyTask& task, PyCollisionChecker& checker, const Pla
     py::gil_scoped_release release;
     std::lock_guard lock(checker.mutex);
     const auto began = std::chrono::steady_clock::now();
-    planned = planWithOmpl(entry.omplName, space, checker.checking->states(), checker.checking->motions(), task.task->start,
-                           task.task->goal, limit, runSeed);
+    planned = planWithOmpl(entry.omplName, space, checker.checking->states(), checker.checking->motions(),
+                           task.task->start, task.task->goal, limit, runSeed);
     result.callSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   }
   auto& s = result.statistics;
@@ -132,23 +137,27 @@ PyPlanResult planOmpl(const PyTask& task, PyCollisionChecker& checker, const Pla
   s.motionChecks = planned.motionChecks;
   s.roadmapNodes = planned.graphStates;
   s.pathNodes = s.pathNodesBeforeSmoothing = planned.path.size();
-  for (std::size_t i = 1; i < planned.path.size(); ++i) s.pathLength += space.distance(planned.path[i - 1], planned.path[i]);
+  for (std::size_t i = 1; i < planned.path.size(); ++i)
+    s.pathLength += space.distance(planned.path[i - 1], planned.path[i]);
   s.pathLengthBeforeSmoothing = s.pathLength;
   result.seed = runSeed;
   result.path = std::move(planned.path);
   return result;
 }
 
-PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle settings, py::handle checker, py::handle synergies,
-                  std::optional<std::uint64_t> seed, std::optional<double> timeLimit, double toleranceMm) {
+PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle settings, py::handle checker,
+                  py::handle synergies, std::optional<std::uint64_t> seed, std::optional<double> timeLimit,
+                  double toleranceMm) {
   const auto entry = findPlanner(planner);
-  if (!entry) throw InputError("", "--planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
+  if (!entry)
+    throw InputError("", "--planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
   auto checking = checkerFor(task, checker, toleranceMm);
   // The CLI's message for a colliding start or goal: checked first for OMPL's planners (they do
   // not check them), after the run for ours (they stop at once with that status; no cost otherwise).
   if (entry->family == PlannerFamily::Ompl) requireFreeEnds(*task.task, *checking);
-  PyPlanResult result = entry->family == PlannerFamily::Ompl ? planOmpl(task, *checking, *entry, seed, timeLimit)
-                                                              : planPmd(task, *checking, *entry, settings, synergies, seed, timeLimit);
+  PyPlanResult result = entry->family == PlannerFamily::Ompl
+                            ? planOmpl(task, *checking, *entry, seed, timeLimit)
+                            : planPmd(task, *checking, *entry, settings, synergies, seed, timeLimit);
   if (result.statistics.status == PlannerStatus::InvalidStart || result.statistics.status == PlannerStatus::InvalidGoal)
     requireFreeEnds(*task.task, *checking);
   result.task = task.task->name;
@@ -165,7 +174,8 @@ py::dict validate(const PyTask& task, py::handle path, double toleranceMm) {
     const std::string file = py::str(path);
     const PathFile read = readPathFile(file);
     if (read.jointNames != task.task->robot->activeJointNames())
-      throw InputError(file, "joint_names", "the path's joints do not match the active joints of robot '" + task.task->robot->name() + "'");
+      throw InputError(file, "joint_names",
+                       "the path's joints do not match the active joints of robot '" + task.task->robot->name() + "'");
     points = read.points;
   } else {
     points = configurationsFrom(task.task->robot->activeJoints(), path, "path", false);
@@ -195,7 +205,8 @@ py::dict humanLikeness(const PyTask& task, py::handle path, py::handle synergies
   HumanLikenessOptions options;
   options.step = step;
   options.subspaceDirections = subspaceDirections;
-  const HumanLikeness measured = measureHumanLikeness(points, planningSpaceFromRobot(*task.task->robot), *model.model, slots, options);
+  const HumanLikeness measured =
+      measureHumanLikeness(points, planningSpaceFromRobot(*task.task->robot), *model.model, slots, options);
   py::dict result;
   result["subspace_distance_mean"] = measured.subspaceDistanceMean;
   result["subspace_distance_max"] = measured.subspaceDistanceMax;
@@ -204,29 +215,35 @@ py::dict humanLikeness(const PyTask& task, py::handle path, py::handle synergies
 }
 
 void bindResult(py::module_& m) {
-  py::class_<PyPlanResult>(m, "PlanResult", "One planner run: status, the path (points, dof) in radians, the statistics.")
+  py::class_<PyPlanResult>(m, "PlanResult",
+                           "One planner run: status, the path (points, dof) in radians, the statistics.")
       .def_readonly("task", &PyPlanResult::task)
       .def_readonly("planner", &PyPlanResult::planner)
       .def_readonly("seed", &PyPlanResult::seed)
       .def_readonly("joint_names", &PyPlanResult::jointNames)
       .def_readonly("call_seconds", &PyPlanResult::callSeconds, "Wall time of the library's planning call alone.")
-      .def_property_readonly("status", [](const PyPlanResult& r) { return plannerStatusName(r.statistics.status); },
-                             "solved, sample_limit, time_limit, invalid_start or invalid_goal.")
+      .def_property_readonly(
+          "status", [](const PyPlanResult& r) { return plannerStatusName(r.statistics.status); },
+          "solved, sample_limit, time_limit, invalid_start or invalid_goal.")
       .def_property_readonly("solved", [](const PyPlanResult& r) { return r.statistics.solved(); })
-      .def_property_readonly("path", [](const PyPlanResult& r) { return pathArray(r.path, static_cast<int>(r.jointNames.size())); },
-                             "(points, dof) float64 array, start first and goal last; empty unless solved.")
-      .def_property_readonly("statistics", [](const PyPlanResult& r) { return jsonToPython(statisticsToJson(r.statistics, true)); },
-                             "The statistics with the keys of `pmdplan plan --json`.")
+      .def_property_readonly(
+          "path", [](const PyPlanResult& r) { return pathArray(r.path, static_cast<int>(r.jointNames.size())); },
+          "(points, dof) float64 array, start first and goal last; empty unless solved.")
+      .def_property_readonly(
+          "statistics", [](const PyPlanResult& r) { return jsonToPython(statisticsToJson(r.statistics, true)); },
+          "The statistics with the keys of `pmdplan plan --json`.")
       .def(
           "save",
           [](const PyPlanResult& r, const std::filesystem::path& file) {
-            if (!r.statistics.solved()) throw InputError(file.string(), "", "the run did not solve: there is no path to write");
-            writePathFile(file, PathFile{r.task, r.planner, r.seed, r.jointNames, r.path, r.closingFrom, r.mimic, r.statistics});
+            if (!r.statistics.solved())
+              throw InputError(file.string(), "", "the run did not solve: there is no path to write");
+            writePathFile(
+                file, PathFile{r.task, r.planner, r.seed, r.jointNames, r.path, r.closingFrom, r.mimic, r.statistics});
           },
           py::arg("file"), "Writes the path file (JSON), as `pmdplan plan -o` does.")
       .def("__repr__", [](const PyPlanResult& r) {
-        return "<pmdplan.PlanResult " + r.planner + " on " + r.task + ": " + plannerStatusName(r.statistics.status) + ", " +
-               std::to_string(r.path.size()) + " points>";
+        return "<pmdplan.PlanResult " + r.planner + " on " + r.task + ": " + plannerStatusName(r.statistics.status) +
+               ", " + std::to_string(r.path.size()) + " points>";
       });
 }
 
@@ -234,14 +251,17 @@ void bindResult(py::module_& m) {
 
 void bindPlanning(py::module_& m) {
   bindResult(m);
-  m.def("planners", [] {
-    std::vector<std::string> names;
-    for (const auto& entry : plannerRoster()) names.push_back(entry.name);
-    return names;
-  }, "Every planner name plan() takes: pmd, full, ompl:RRTConnect, ...");
+  m.def(
+      "planners",
+      [] {
+        std::vector<std::string> names;
+        for (const auto& entry : plannerRoster()) names.push_back(entry.name);
+        return names;
+      },
+      "Every planner name plan() takes: pmd, full, ompl:RRTConnect, ...");
   m.def("plan", &plan, py::arg("task"), py::arg("planner") = "pmd", py::kw_only(), py::arg("settings") = py::none(),
-        py::arg("checker") = "fast", py::arg("synergies") = py::none(), py::arg("seed") = py::none(), py::arg("time_limit") = py::none(),
-        py::arg("tolerance_mm") = 1.0,
+        py::arg("checker") = "fast", py::arg("synergies") = py::none(), py::arg("seed") = py::none(),
+        py::arg("time_limit") = py::none(), py::arg("tolerance_mm") = 1.0,
         "Plans task with planner 'pmd' (the paper's), 'full' (its full-space baseline) or 'ompl:<Name>'.\n"
         "settings: PlannerSettings (pmd/full); seed and time_limit override it. checker: 'fast', 'exact' or a\n"
         "CollisionChecker of this task (reused; its tolerance applies). synergies: SynergyModel, a model file or\n"
@@ -251,8 +271,8 @@ void bindPlanning(py::module_& m) {
   m.def("validate", &validate, py::arg("task"), py::arg("path"), py::arg("tolerance_mm") = 1.0,
         "The independent check of `pmdplan validate`: path is an (n, dof) array or a path file. Returns\n"
         "{'valid', 'states_checked', 'collisions', 'problems'} (the keys of `pmdplan validate --json`).");
-  m.def("human_likeness", &humanLikeness, py::arg("task"), py::arg("path"), py::arg("synergies") = py::none(), py::arg("step") = 0.01,
-        py::arg("subspace_directions") = HumanLikenessOptions{}.subspaceDirections,
+  m.def("human_likeness", &humanLikeness, py::arg("task"), py::arg("path"), py::arg("synergies") = py::none(),
+        py::arg("step") = 0.01, py::arg("subspace_directions") = HumanLikenessOptions{}.subspaceDirections,
         "How human-like a path's hand motion is (the benchmarks' measure): {'subspace_distance_mean',\n"
         "'subspace_distance_max', 'mahalanobis_mean'}, walked along the path at `step` (normalised units).");
 }

@@ -29,13 +29,15 @@ std::vector<int> identitySlots(const SynergyModel& model) {
 
 Eigen::VectorXd normalised(const SynergyModel& model, const Eigen::VectorXd& posture) {
   Eigen::VectorXd unit(posture.size());
-  for (int j = 0; j < model.jointCount(); ++j) unit[j] = model.joints[static_cast<std::size_t>(j)].normalise(posture[j]);
+  for (int j = 0; j < model.jointCount(); ++j)
+    unit[j] = model.joints[static_cast<std::size_t>(j)].normalise(posture[j]);
   return unit;
 }
 
 Eigen::VectorXd denormalised(const SynergyModel& model, const Eigen::VectorXd& unit) {
   Eigen::VectorXd posture(unit.size());
-  for (int j = 0; j < model.jointCount(); ++j) posture[j] = model.joints[static_cast<std::size_t>(j)].denormalise(unit[j]);
+  for (int j = 0; j < model.jointCount(); ++j)
+    posture[j] = model.joints[static_cast<std::size_t>(j)].denormalise(unit[j]);
   return posture;
 }
 
@@ -63,7 +65,8 @@ Eigen::VectorXd projected(const SynergyModel& model, const Eigen::VectorXd& post
 JointLimits fitJointsFrom(py::handle joints) {
   if (py::isinstance<PyRobot>(joints)) {
     const RobotModel& robot = *joints.cast<const PyRobot&>().model;
-    if (!robot.hasGroup("hand")) throw InputError(robot.urdfPath().string(), "groups", "the robot has no 'hand' group to fit synergies for");
+    if (!robot.hasGroup("hand"))
+      throw InputError(robot.urdfPath().string(), "groups", "the robot has no 'hand' group to fit synergies for");
     return robot.groupJoints("hand");
   }
   JointLimits limits;
@@ -74,76 +77,99 @@ JointLimits fitJointsFrom(py::handle joints) {
     throw InputError("", "joints", "expected a Robot (its hand group) or a list of (name, lower, upper) in radians");
   }
   for (const auto& joint : limits)
-    if (!(joint.upper > joint.lower)) throw InputError("", "joints", "joint '" + joint.name + "': expected lower < upper");
+    if (!(joint.upper > joint.lower))
+      throw InputError("", "joints", "joint '" + joint.name + "': expected lower < upper");
   return limits;
 }
 
 void bindModel(py::module_& m) {
-  py::class_<PySynergyModel>(m, "SynergyModel",
-                             "Principal motion directions of a hand: mean posture, directions ordered by variance, their sigma;\n"
-                             "all in joint values normalised to [0, 1] by the model's joint limits. Postures passed in and\n"
-                             "returned are radians for the model's joints (joint_names order, or a dict).")
+  py::class_<PySynergyModel>(
+      m, "SynergyModel",
+      "Principal motion directions of a hand: mean posture, directions ordered by variance, their sigma;\n"
+      "all in joint values normalised to [0, 1] by the model's joint limits. Postures passed in and\n"
+      "returned are radians for the model's joints (joint_names order, or a dict).")
       .def_static(
-          "load", [](const std::filesystem::path& path) { return modelOf(loadSynergyModel(path), path.string()); }, py::arg("path"),
+          "load", [](const std::filesystem::path& path) { return modelOf(loadSynergyModel(path), path.string()); },
+          py::arg("path"),
           "Reads a synergy model file (YAML); raises InputError naming the file and key for malformed content.")
       .def_static(
-          "default_for", [](const std::string& robot) {
+          "default_for",
+          [](const std::string& robot) {
             const auto path = defaultSynergyModelPath(robot);
             return modelOf(loadSynergyModel(path), path.string());
           },
           py::arg("robot_name"), "The robot's shipped model (data/synergies/<robot>_default.yaml).")
       .def(
-          "save", [](const PySynergyModel& s, const std::filesystem::path& path) { saveSynergyModel(path, *s.model); }, py::arg("path"),
+          "save", [](const PySynergyModel& s, const std::filesystem::path& path) { saveSynergyModel(path, *s.model); },
+          py::arg("path"),
           "Writes the model file (atomically; numbers in their shortest exact form, so it loads back identical).")
-      .def("to_yaml", [](const PySynergyModel& s) { return formatSynergyModel(*s.model); }, "The model file's text.")
-      .def_property_readonly("source", [](const PySynergyModel& s) { return s.source; }, "The file it was read from, if any.")
-      .def_property_readonly("joint_names", [](const PySynergyModel& s) {
-        std::vector<std::string> names;
-        for (const auto& joint : s.model->joints) names.push_back(joint.name);
-        return names;
-      })
-      .def_property_readonly("lower", [](const PySynergyModel& s) {
-        Eigen::VectorXd v(s.model->jointCount());
-        for (int j = 0; j < v.size(); ++j) v[j] = s.model->joints[static_cast<std::size_t>(j)].lower;
-        return v;
-      })
-      .def_property_readonly("upper", [](const PySynergyModel& s) {
-        Eigen::VectorXd v(s.model->jointCount());
-        for (int j = 0; j < v.size(); ++j) v[j] = s.model->joints[static_cast<std::size_t>(j)].upper;
-        return v;
-      })
+      .def(
+          "to_yaml", [](const PySynergyModel& s) { return formatSynergyModel(*s.model); }, "The model file's text.")
+      .def_property_readonly(
+          "source", [](const PySynergyModel& s) { return s.source; }, "The file it was read from, if any.")
+      .def_property_readonly("joint_names",
+                             [](const PySynergyModel& s) {
+                               std::vector<std::string> names;
+                               for (const auto& joint : s.model->joints) names.push_back(joint.name);
+                               return names;
+                             })
+      .def_property_readonly("lower",
+                             [](const PySynergyModel& s) {
+                               Eigen::VectorXd v(s.model->jointCount());
+                               for (int j = 0; j < v.size(); ++j)
+                                 v[j] = s.model->joints[static_cast<std::size_t>(j)].lower;
+                               return v;
+                             })
+      .def_property_readonly("upper",
+                             [](const PySynergyModel& s) {
+                               Eigen::VectorXd v(s.model->jointCount());
+                               for (int j = 0; j < v.size(); ++j)
+                                 v[j] = s.model->joints[static_cast<std::size_t>(j)].upper;
+                               return v;
+                             })
       .def_property_readonly("own_axis_joints", [](const PySynergyModel& s) { return s.model->ownAxisJoints; })
-      .def_property_readonly("mean", [](const PySynergyModel& s) { return Eigen::VectorXd(s.model->mean); }, "b, normalised units.")
-      .def_property_readonly("directions", [](const PySynergyModel& s) { return Eigen::MatrixXd(s.model->directions); },
-                             "(joints, directions): column i is PMD i+1.")
+      .def_property_readonly(
+          "mean", [](const PySynergyModel& s) { return Eigen::VectorXd(s.model->mean); }, "b, normalised units.")
+      .def_property_readonly(
+          "directions", [](const PySynergyModel& s) { return Eigen::MatrixXd(s.model->directions); },
+          "(joints, directions): column i is PMD i+1.")
       .def_property_readonly("sigma", [](const PySynergyModel& s) { return Eigen::VectorXd(s.model->sigma); })
-      .def_property_readonly("variance_fraction", [](const PySynergyModel& s) { return Eigen::VectorXd(s.model->varianceFraction); })
-      .def_property_readonly("cumulative_variance", [](const PySynergyModel& s) {
-        Eigen::VectorXd cumulative = s.model->varianceFraction;
-        for (Eigen::Index i = 1; i < cumulative.size(); ++i) cumulative[i] += cumulative[i - 1];
-        return cumulative;
-      }, "Share of the variance held by the first 1, 2, ... directions (the paper's Fig. 10).")
+      .def_property_readonly("variance_fraction",
+                             [](const PySynergyModel& s) { return Eigen::VectorXd(s.model->varianceFraction); })
+      .def_property_readonly(
+          "cumulative_variance",
+          [](const PySynergyModel& s) {
+            Eigen::VectorXd cumulative = s.model->varianceFraction;
+            for (Eigen::Index i = 1; i < cumulative.size(); ++i) cumulative[i] += cumulative[i - 1];
+            return cumulative;
+          },
+          "Share of the variance held by the first 1, 2, ... directions (the paper's Fig. 10).")
       .def_property_readonly("orthonormal", [](const PySynergyModel& s) { return s.model->orthonormal; })
       .def_property_readonly("provenance", [](const PySynergyModel& s) { return s.model->provenance; })
       .def_property_readonly("direction_count", [](const PySynergyModel& s) { return s.model->directionCount(); })
       .def(
           "coefficients",
           [](const PySynergyModel& s, py::handle posture) {
-            return synergyCoefficients(*s.model, normalised(*s.model, jointValuesFrom(s.model->joints, posture, "posture", false)));
+            return synergyCoefficients(
+                *s.model, normalised(*s.model, jointValuesFrom(s.model->joints, posture, "posture", false)));
           },
-          py::arg("posture"), "Coefficients along every direction of a posture (least squares for a non-orthonormal basis).")
+          py::arg("posture"),
+          "Coefficients along every direction of a posture (least squares for a non-orthonormal basis).")
       .def(
           "posture",
           [](const PySynergyModel& s, const Eigen::VectorXd& coefficients) {
             if (coefficients.size() > s.model->directionCount())
-              throw InputError("", "coefficients", "expected at most " + std::to_string(s.model->directionCount()) + " coefficients");
+              throw InputError("", "coefficients",
+                               "expected at most " + std::to_string(s.model->directionCount()) + " coefficients");
             return denormalised(*s.model, postureFromCoefficients(*s.model, coefficients));
           },
-          py::arg("coefficients"), "mean + D s in radians (the first len(s) directions; own axes at their mean; not clamped).")
+          py::arg("coefficients"),
+          "mean + D s in radians (the first len(s) directions; own axes at their mean; not clamped).")
       .def(
           "project",
           [](const PySynergyModel& s, py::handle posture, int directions) {
-            return projected(*s.model, jointValuesFrom(s.model->joints, posture, "posture", false), directionsArgument(*s.model, directions));
+            return projected(*s.model, jointValuesFrom(s.model->joints, posture, "posture", false),
+                             directionsArgument(*s.model, directions));
           },
           py::arg("posture"), py::arg("directions") = 4,
           "The nearest posture in the subspace the planner samples: own axes (kept) plus the first `directions` PMDs.")
@@ -153,7 +179,8 @@ void bindModel(py::module_& m) {
             const Eigen::VectorXd values = jointValuesFrom(s.model->joints, posture, "posture", false);
             return Eigen::VectorXd(synergyReadout(*s.model, identitySlots(*s.model), values).distanceFromSubspace);
           },
-          py::arg("posture"), "Entry k: normalised distance of the posture from the own axes plus the first k PMDs (k = 0 ... count).")
+          py::arg("posture"),
+          "Entry k: normalised distance of the posture from the own axes plus the first k PMDs (k = 0 ... count).")
       .def("__repr__", [](const PySynergyModel& s) {
         return "<pmdplan.SynergyModel " + std::to_string(s.model->jointCount()) + " joints, " +
                std::to_string(s.model->directionCount()) + " directions>";
@@ -163,11 +190,13 @@ void bindModel(py::module_& m) {
 void bindFit(py::module_& m) {
   m.def(
       "fit_synergies",
-      [](const Eigen::MatrixXd& postures, py::handle joints, std::vector<std::string> ownAxisJoints, double constantTolerance,
-         std::string provenance) {
+      [](const Eigen::MatrixXd& postures, py::handle joints, std::vector<std::string> ownAxisJoints,
+         double constantTolerance, std::string provenance) {
         const JointLimits limits = fitJointsFrom(joints);
         if (postures.cols() != static_cast<Eigen::Index>(limits.size()))
-          throw InputError("", "postures", "expected an array of shape (frames, " + std::to_string(limits.size()) + "): one column per joint");
+          throw InputError(
+              "", "postures",
+              "expected an array of shape (frames, " + std::to_string(limits.size()) + "): one column per joint");
         SynergyFitOptions options;
         options.ownAxisJoints = std::move(ownAxisJoints);
         options.constantTolerance = constantTolerance;

@@ -17,8 +17,9 @@ double checkedValue(const JointLimit& joint, double value, const std::string& fi
   if (!withinLimits) return value;
   constexpr double kSlack = 1e-9;
   if (value < joint.lower - kSlack || value > joint.upper + kSlack)
-    throw InputError("", field, "joint '" + joint.name + "' = " + std::to_string(value) + " is outside its limits [" +
-                                    std::to_string(joint.lower) + ", " + std::to_string(joint.upper) + "]");
+    throw InputError("", field,
+                     "joint '" + joint.name + "' = " + std::to_string(value) + " is outside its limits [" +
+                         std::to_string(joint.lower) + ", " + std::to_string(joint.upper) + "]");
   return std::min(std::max(value, joint.lower), joint.upper);
 }
 
@@ -28,7 +29,8 @@ std::string expectedShape(std::size_t joints) {
 
 }  // namespace
 
-Eigen::VectorXd jointValuesFrom(const JointLimits& joints, py::handle value, const std::string& field, bool withinLimits) {
+Eigen::VectorXd jointValuesFrom(const JointLimits& joints, py::handle value, const std::string& field,
+                                bool withinLimits) {
   Eigen::VectorXd values(static_cast<Eigen::Index>(joints.size()));
   if (py::isinstance<py::dict>(value)) {
     const auto dict = py::reinterpret_borrow<py::dict>(value);
@@ -60,7 +62,8 @@ Eigen::VectorXd jointValuesFrom(const JointLimits& joints, py::handle value, con
   if (!array || array.ndim() != 1 || static_cast<std::size_t>(array.shape(0)) != joints.size())
     throw InputError("", field, expectedShape(joints.size()));
   for (std::size_t i = 0; i < joints.size(); ++i)
-    values[static_cast<Eigen::Index>(i)] = checkedValue(joints[i], array.at(static_cast<py::ssize_t>(i)), field, withinLimits);
+    values[static_cast<Eigen::Index>(i)] =
+        checkedValue(joints[i], array.at(static_cast<py::ssize_t>(i)), field, withinLimits);
   return values;
 }
 
@@ -72,13 +75,15 @@ std::vector<Configuration> configurationsFrom(const JointLimits& joints, py::han
   } catch (const py::error_already_set&) {
   }
   if (!array || array.ndim() != 2 || static_cast<std::size_t>(array.shape(1)) != joints.size())
-    throw InputError("", field, "expected an array of shape (n, " + std::to_string(joints.size()) + "): one row per configuration");
+    throw InputError(
+        "", field, "expected an array of shape (n, " + std::to_string(joints.size()) + "): one row per configuration");
   const auto rows = array.unchecked<2>();
-  std::vector<Configuration> result(static_cast<std::size_t>(rows.shape(0)), Configuration(static_cast<Eigen::Index>(joints.size())));
+  std::vector<Configuration> result(static_cast<std::size_t>(rows.shape(0)),
+                                    Configuration(static_cast<Eigen::Index>(joints.size())));
   for (py::ssize_t r = 0; r < rows.shape(0); ++r)
     for (std::size_t j = 0; j < joints.size(); ++j)
-      result[static_cast<std::size_t>(r)][static_cast<Eigen::Index>(j)] =
-          checkedValue(joints[j], rows(r, static_cast<py::ssize_t>(j)), field + "[" + std::to_string(r) + "]", withinLimits);
+      result[static_cast<std::size_t>(r)][static_cast<Eigen::Index>(j)] = checkedValue(
+          joints[j], rows(r, static_cast<py::ssize_t>(j)), field + "[" + std::to_string(r) + "]", withinLimits);
   return result;
 }
 

@@ -18,7 +18,8 @@ namespace py = pybind11;
 /// {joint name: value} naming every joint once. Radians (metres for prismatic joints); finite and
 /// within the limits (a value at most 1e-9 outside is taken as the limit, as task files are read)
 /// unless `withinLimits` is false.
-Eigen::VectorXd jointValuesFrom(const JointLimits& joints, py::handle value, const std::string& field, bool withinLimits = true);
+Eigen::VectorXd jointValuesFrom(const JointLimits& joints, py::handle value, const std::string& field,
+                                bool withinLimits = true);
 
 /// Rows of an array-like of shape (points, joints.size()) as configurations, checked like
 /// jointValuesFrom (`within_limits` false: only the shape and finiteness are checked).

@@ -14,9 +14,11 @@
 namespace pmdplan::python {
 namespace {
 
-constexpr const char* kObstacleForm = "an obstacle {name, one of box / cylinder / sphere / mesh, xyz, optional rpy_deg}";
+constexpr const char* kObstacleForm =
+    "an obstacle {name, one of box / cylinder / sphere / mesh, xyz, optional rpy_deg}";
 
-std::vector<double> numbers(py::handle value, std::size_t count, const std::string& field, const std::string& form, bool positive) {
+std::vector<double> numbers(py::handle value, std::size_t count, const std::string& field, const std::string& form,
+                            bool positive) {
   std::vector<double> result;
   try {
     result = value.cast<std::vector<double>>();
@@ -33,7 +35,8 @@ double positiveNumber(py::handle value, const std::string& field, const std::str
   return numbers(py::make_tuple(value), 1, field, form, true)[0];
 }
 
-py::dict mapWithKeys(py::handle value, const std::set<std::string>& allowed, const std::string& field, const std::string& form) {
+py::dict mapWithKeys(py::handle value, const std::set<std::string>& allowed, const std::string& field,
+                     const std::string& form) {
   if (!py::isinstance<py::dict>(value)) throw InputError("", field, "expected " + form);
   auto dict = py::reinterpret_borrow<py::dict>(value);
   for (const auto& [key, entry] : dict) {
@@ -58,15 +61,18 @@ Shape shapeFrom(const std::string& type, py::handle value, const std::string& fi
     const std::string form = "{radius, length} in metres (the axis is the local z)";
     const auto dict = mapWithKeys(value, {"radius", "length"}, field, form);
     CylinderShape cylinder;
-    cylinder.radius = positiveNumber(required(dict, "radius", field, form), field + ".radius", "a length in metres greater than 0");
-    cylinder.length = positiveNumber(required(dict, "length", field, form), field + ".length", "a length in metres greater than 0");
+    cylinder.radius =
+        positiveNumber(required(dict, "radius", field, form), field + ".radius", "a length in metres greater than 0");
+    cylinder.length =
+        positiveNumber(required(dict, "length", field, form), field + ".length", "a length in metres greater than 0");
     return cylinder;
   }
   const std::string form = "{file, optional scale [x, y, z]} (a relative file is relative to the working directory)";
   const auto dict = mapWithKeys(value, {"file", "scale"}, field, form);
   MeshShape mesh;
   const py::handle file = required(dict, "file", field, form);
-  if (!py::isinstance<py::str>(file) && !py::hasattr(file, "__fspath__")) throw InputError("", field + ".file", "expected a mesh file path");
+  if (!py::isinstance<py::str>(file) && !py::hasattr(file, "__fspath__"))
+    throw InputError("", field + ".file", "expected a mesh file path");
   mesh.file = std::filesystem::absolute(py::str(file).cast<std::string>()).lexically_normal();
   std::error_code error;
   if (!std::filesystem::is_regular_file(mesh.file, error))
@@ -80,7 +86,8 @@ Shape shapeFrom(const std::string& type, py::handle value, const std::string& fi
 
 Eigen::Matrix3d rotationFromDegrees(const std::vector<double>& rpy) {
   const double k = std::numbers::pi / 180.0;
-  return (Eigen::AngleAxisd(rpy[2] * k, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy[1] * k, Eigen::Vector3d::UnitY()) *
+  return (Eigen::AngleAxisd(rpy[2] * k, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(rpy[1] * k, Eigen::Vector3d::UnitY()) *
           Eigen::AngleAxisd(rpy[0] * k, Eigen::Vector3d::UnitX()))
       .toRotationMatrix();
 }
@@ -101,7 +108,8 @@ Eigen::Isometry3d placementOfDict(const py::dict& dict, const std::string& field
 Eigen::Isometry3d placementFrom(py::handle value, const std::string& field) {
   if (value.is_none()) return Eigen::Isometry3d::Identity();
   if (py::isinstance<py::dict>(value))
-    return placementOfDict(mapWithKeys(value, {"xyz", "rpy_deg"}, field, "{xyz, optional rpy_deg} or a 4x4 matrix"), field);
+    return placementOfDict(mapWithKeys(value, {"xyz", "rpy_deg"}, field, "{xyz, optional rpy_deg} or a 4x4 matrix"),
+                           field);
   const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
   if (!array || array.ndim() != 2 || array.shape(0) != 4 || array.shape(1) != 4) {
     PyErr_Clear();
@@ -129,22 +137,28 @@ std::vector<Obstacle> obstaclesFrom(py::handle list) {
   const auto items = py::reinterpret_borrow<py::sequence>(list);
   for (std::size_t i = 0; i < items.size(); ++i) {
     const std::string field = "obstacles[" + std::to_string(i) + "]";
-    const auto dict = mapWithKeys(items[i], {"name", "box", "cylinder", "sphere", "mesh", "xyz", "rpy_deg"}, field, kObstacleForm);
+    const auto dict =
+        mapWithKeys(items[i], {"name", "box", "cylinder", "sphere", "mesh", "xyz", "rpy_deg"}, field, kObstacleForm);
     Obstacle obstacle;
     const py::handle name = required(dict, "name", field, "a unique obstacle name");
     if (!py::isinstance<py::str>(name) || name.cast<std::string>().empty())
       throw InputError("", field + ".name", "expected a unique obstacle name (a non-empty str)");
     obstacle.name = name.cast<std::string>();
     if (!names.insert(obstacle.name).second)
-      throw InputError("", field + ".name", "obstacle name '" + obstacle.name + "' is already used; names must be unique");
+      throw InputError("", field + ".name",
+                       "obstacle name '" + obstacle.name + "' is already used; names must be unique");
     std::string type;
     for (const char* candidate : {"box", "cylinder", "sphere", "mesh"}) {
       if (!dict.contains(candidate)) continue;
-      if (!type.empty()) throw InputError("", field + "." + candidate, "an obstacle has exactly one shape, but " + type + " is given too");
+      if (!type.empty())
+        throw InputError("", field + "." + candidate,
+                         "an obstacle has exactly one shape, but " + type + " is given too");
       type = candidate;
     }
     if (type.empty())
-      throw InputError("", field, "no shape; expected one of box: [x, y, z], cylinder: {radius, length}, sphere: radius, mesh: {file, scale}");
+      throw InputError(
+          "", field,
+          "no shape; expected one of box: [x, y, z], cylinder: {radius, length}, sphere: radius, mesh: {file, scale}");
     obstacle.shape = shapeFrom(type, dict[type.c_str()], field + "." + type);
     obstacle.pose = placementOfDict(dict, field);
     obstacles.push_back(std::move(obstacle));
@@ -158,10 +172,16 @@ py::dict obstacleToPython(const Obstacle& obstacle) {
   std::visit(
       [&](const auto& shape) {
         using S = std::decay_t<decltype(shape)>;
-        if constexpr (std::is_same_v<S, BoxShape>) dict["box"] = std::vector<double>{shape.size.x(), shape.size.y(), shape.size.z()};
-        else if constexpr (std::is_same_v<S, CylinderShape>) dict["cylinder"] = py::dict(py::arg("radius") = shape.radius, py::arg("length") = shape.length);
-        else if constexpr (std::is_same_v<S, SphereShape>) dict["sphere"] = shape.radius;
-        else dict["mesh"] = py::dict(py::arg("file") = shape.file.string(), py::arg("scale") = std::vector<double>{shape.scale.x(), shape.scale.y(), shape.scale.z()});
+        if constexpr (std::is_same_v<S, BoxShape>)
+          dict["box"] = std::vector<double>{shape.size.x(), shape.size.y(), shape.size.z()};
+        else if constexpr (std::is_same_v<S, CylinderShape>)
+          dict["cylinder"] = py::dict(py::arg("radius") = shape.radius, py::arg("length") = shape.length);
+        else if constexpr (std::is_same_v<S, SphereShape>)
+          dict["sphere"] = shape.radius;
+        else
+          dict["mesh"] =
+              py::dict(py::arg("file") = shape.file.string(),
+                       py::arg("scale") = std::vector<double>{shape.scale.x(), shape.scale.y(), shape.scale.z()});
       },
       obstacle.shape);
   const Eigen::Vector3d t = obstacle.pose.translation();
@@ -172,8 +192,8 @@ py::dict obstacleToPython(const Obstacle& obstacle) {
   return dict;
 }
 
-Task taskFrom(std::shared_ptr<const RobotModel> robot, py::handle start, py::handle goal, py::handle obstacles, py::handle base,
-              const TaskDescription& description) {
+Task taskFrom(std::shared_ptr<const RobotModel> robot, py::handle start, py::handle goal, py::handle obstacles,
+              py::handle base, const TaskDescription& description) {
   Task task;
   task.name = description.name;
   task.description = description.description;

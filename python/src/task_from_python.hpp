@@ -29,7 +29,7 @@ struct TaskDescription {
 };
 
 /// Checks the target names an obstacle.
-Task taskFrom(std::shared_ptr<const RobotModel> robot, py::handle start, py::handle goal, py::handle obstacles, py::handle base,
-              const TaskDescription& description);
+Task taskFrom(std::shared_ptr<const RobotModel> robot, py::handle start, py::handle goal, py::handle obstacles,
+              py::handle base, const TaskDescription& description);
 
 }  // namespace pmdplan::python

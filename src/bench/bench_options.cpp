@@ -19,7 +19,8 @@ void checkBenchOptions(const BenchOptions& o) {
   std::set<std::string> seen;
   for (const auto& task : o.tasks)
     if (!seen.insert(task).second) throw InputError("", "TASK", "task '" + task + "' is given twice");
-  if (o.planners.empty()) throw InputError("", "--planners", "no planner given; expected a comma-separated list of " + knownPlannerNames());
+  if (o.planners.empty())
+    throw InputError("", "--planners", "no planner given; expected a comma-separated list of " + knownPlannerNames());
   seen.clear();
   for (const auto& planner : o.planners) {
     if (!findPlanner(planner))
@@ -49,8 +50,10 @@ void checkBenchOptions(const BenchOptions& o) {
 std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> items(1);
   for (const char c : text) {
-    if (c == ',') items.emplace_back();
-    else items.back() += c;
+    if (c == ',')
+      items.emplace_back();
+    else
+      items.back() += c;
   }
   return items;
 }

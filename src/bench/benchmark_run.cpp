@@ -17,12 +17,18 @@ void keepPath(const TaskBench& bench, const RunRecord& record, const std::vector
               std::optional<std::size_t> closingFrom, const PlanningStatistics& statistics, PathFile* path) {
   if (!path) return;
   const Task& task = bench.task();
-  *path = PathFile{task.name, record.planner, record.seed, task.robot->activeJointNames(), points, closingFrom,
-                   mimicRelations(*task.robot), statistics};
+  *path = PathFile{task.name,
+                   record.planner,
+                   record.seed,
+                   task.robot->activeJointNames(),
+                   points,
+                   closingFrom,
+                   mimicRelations(*task.robot),
+                   statistics};
 }
 
-RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record, const PlannerParameters& parameters,
-                        PathFile* path) {
+RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record,
+                        const PlannerParameters& parameters, PathFile* path) {
   TaskPlanningOptions options;
   options.mode = planner.mode;
   options.parameters = parameters;
@@ -53,9 +59,9 @@ RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord recor
   const Task& task = bench.task();
   MotionValidator& motions = bench.checking().motions();
   const OmplPmdSampling pmdSampling{&bench.synergies(), parameters.pmdBox, parameters.initialArmHalfSize};
-  const OmplPlanningResult result = planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions,
-                                                 task.start, task.goal, parameters.timeLimit, record.seed,
-                                                 planner.pmdSampling ? &pmdSampling : nullptr);
+  const OmplPlanningResult result =
+      planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions, task.start, task.goal,
+                   parameters.timeLimit, record.seed, planner.pmdSampling ? &pmdSampling : nullptr);
   record.solved = result.solved;
   record.planningTimeSeconds = result.planningTimeSeconds;
   record.samples = result.stateChecks;
@@ -92,12 +98,14 @@ void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRec
                 std::optional<std::size_t> closingFrom) {
   record.pathNodes = path.size();
   record.pathLength = path.empty() ? 0.0 : pathLength(path, bench.space());
-  if (!path.empty()) record.humanLikeness = measureHumanLikeness(path, bench.space(), bench.synergies(), bench.synergySlots());
+  if (!path.empty())
+    record.humanLikeness = measureHumanLikeness(path, bench.space(), bench.synergies(), bench.synergySlots());
   const PathValidation validation =
       validateTaskPath(bench.validationChecker(), bench.validationSegments(), bench.task(), path, closingFrom);
   record.valid = validation.valid;
   if (!validation.valid)
-    record.failure = "invalid path: " + (validation.problems.empty() ? std::string("rejected by validation") : validation.problems.front());
+    record.failure = "invalid path: " + (validation.problems.empty() ? std::string("rejected by validation")
+                                                                     : validation.problems.front());
 }
 
 }  // namespace pmdplan

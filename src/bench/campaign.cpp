@@ -2,8 +2,8 @@
 
 #include <chrono>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "pmdplan/bench/benchmark_run.hpp"
@@ -12,9 +12,9 @@
 #include "pmdplan/bench/forked_run.hpp"
 #include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/bench/task_bench.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/io/path_set.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 
@@ -31,7 +31,8 @@ std::vector<CampaignJob> campaignJobs(const BenchOptions& options) {
 std::vector<std::size_t> jobsOfRank(std::size_t jobCount, int rank, int ranks) {
   if (ranks < 1 || rank < 0 || rank >= ranks) throw std::invalid_argument("jobsOfRank: rank out of range");
   std::vector<std::size_t> mine;
-  for (std::size_t j = static_cast<std::size_t>(rank); j < jobCount; j += static_cast<std::size_t>(ranks)) mine.push_back(j);
+  for (std::size_t j = static_cast<std::size_t>(rank); j < jobCount; j += static_cast<std::size_t>(ranks))
+    mine.push_back(j);
   return mine;
 }
 
@@ -39,14 +40,13 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options) {
   std::vector<Task> tasks;
   for (const auto& name : options.tasks) tasks.push_back(loadTaskByName(name));
   CampaignInputs inputs;
-  const std::filesystem::path file = options.synergies.empty()
-                                         ? shippedSynergyModelPath(tasks.front().robot->name())
-                                         : options.synergies;
+  const std::filesystem::path file =
+      options.synergies.empty() ? shippedSynergyModelPath(tasks.front().robot->name()) : options.synergies;
   inputs.synergies = std::make_unique<SynergyModel>(loadSynergyModel(file));
   inputs.synergyFile = file.string();
   for (Task& task : tasks)
-    inputs.tasks.push_back(std::make_unique<TaskBench>(std::move(task), options.checker, options.toleranceMetres, *inputs.synergies,
-                                                       inputs.synergyFile));
+    inputs.tasks.push_back(std::make_unique<TaskBench>(std::move(task), options.checker, options.toleranceMetres,
+                                                       *inputs.synergies, inputs.synergyFile));
   return inputs;
 }
 
@@ -57,7 +57,8 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
   std::vector<PlannerEntry> planners;
   for (const auto& name : options.planners) {
     const auto entry = findPlanner(name);
-    if (!entry) throw InputError("", "--planners", "'" + name + "' is not a planner; known planners: " + knownPlannerNames());
+    if (!entry)
+      throw InputError("", "--planners", "'" + name + "' is not a planner; known planners: " + knownPlannerNames());
     planners.push_back(*entry);
   }
   if (!options.paths.empty()) createOutputFolder(options.paths, "--paths");
@@ -80,7 +81,8 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
         [&] {
           // The child writes the path itself: only the record travels back.
           PathFile path;
-          const RunRecord run = runPlannerOnce(*bench, planner, job.run, parameters, options.paths.empty() ? nullptr : &path);
+          const RunRecord run =
+              runPlannerOnce(*bench, planner, job.run, parameters, options.paths.empty() ? nullptr : &path);
           if (!path.points.empty())
             writePathFile(options.paths / benchPathFileName(run.task, run.planner, run.seed), path);
           return encodeRunRecord(run);
@@ -110,8 +112,9 @@ std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options) {
   std::vector<RunRecord> records;
   for (auto& [index, record] : CampaignJournal::finishedJobs(options.journal, options)) {
     if (index >= jobCount)
-      throw InputError(options.journal.string(), "--journal",
-                       "holds job " + std::to_string(index) + " but the campaign has " + std::to_string(jobCount) + " jobs");
+      throw InputError(
+          options.journal.string(), "--journal",
+          "holds job " + std::to_string(index) + " but the campaign has " + std::to_string(jobCount) + " jobs");
     records.push_back(std::move(record));
   }
   return records;
@@ -123,9 +126,11 @@ std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& 
   const std::vector<std::size_t> mine = jobsOfRank(jobCount, ranks.rank(), ranks.size());
   std::optional<CampaignJournal> journal;
   if (!options.journal.empty()) journal.emplace(options.journal, options, ranks.rank());
-  const std::vector<RunRecord> records = runCampaignJobs(options, inputs, mine, progress, journal ? &*journal : nullptr);
+  const std::vector<RunRecord> records =
+      runCampaignJobs(options, inputs, mine, progress, journal ? &*journal : nullptr);
   std::string text;
-  for (std::size_t i = 0; i < records.size(); ++i) text += std::to_string(mine[i]) + "\t" + encodeRunRecord(records[i]) + "\n";
+  for (std::size_t i = 0; i < records.size(); ++i)
+    text += std::to_string(mine[i]) + "\t" + encodeRunRecord(records[i]) + "\n";
   const std::vector<std::string> parts = ranks.gatherToFirst(text);
   if (!ranks.first()) return {};
   std::map<std::size_t, RunRecord> byJob;

@@ -27,17 +27,19 @@ std::string joined(const std::vector<std::string>& items) {
 std::string CampaignJournal::header(const BenchOptions& o) {
   std::ostringstream text;
   text.precision(17);
-  text << "# pmdplan bench journal: tasks=" << joined(o.tasks) << " planners=" << joined(o.planners) << " runs=" << o.runs
-       << " seed=" << o.seed << " time-limit=" << o.timeLimit << " grace=" << o.graceSeconds
-       << " checker=" << checkerKindName(o.checker) << " tolerance=" << o.toleranceMetres << " synergies=" << o.synergies.string()
-       << " pmd-settings=[" << describePlannerSettings(o.pmdParameters) << "] full-settings=["
-       << describePlannerSettings(o.fullParameters) << "]";
+  text << "# pmdplan bench journal: tasks=" << joined(o.tasks) << " planners=" << joined(o.planners)
+       << " runs=" << o.runs << " seed=" << o.seed << " time-limit=" << o.timeLimit << " grace=" << o.graceSeconds
+       << " checker=" << checkerKindName(o.checker) << " tolerance=" << o.toleranceMetres
+       << " synergies=" << o.synergies.string() << " pmd-settings=[" << describePlannerSettings(o.pmdParameters)
+       << "] full-settings=[" << describePlannerSettings(o.fullParameters) << "]";
   return text.str();
 }
 
-std::map<std::size_t, RunRecord> CampaignJournal::finishedJobs(const std::filesystem::path& folder, const BenchOptions& options) {
+std::map<std::size_t, RunRecord> CampaignJournal::finishedJobs(const std::filesystem::path& folder,
+                                                               const BenchOptions& options) {
   if (!std::filesystem::is_directory(folder))
-    throw InputError(folder.string(), "--journal", "no such journal folder; expected the folder of a campaign started with --journal");
+    throw InputError(folder.string(), "--journal",
+                     "no such journal folder; expected the folder of a campaign started with --journal");
   const std::string expected = header(options);
   std::map<std::size_t, RunRecord> records;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
@@ -53,7 +55,8 @@ std::map<std::size_t, RunRecord> CampaignJournal::finishedJobs(const std::filesy
       if (start == 0) {
         if (line != expected)
           throw InputError(entry.path().string(), "--journal",
-                           "belongs to another campaign (" + line + "); expected '" + expected + "': use another folder or remove it");
+                           "belongs to another campaign (" + line + "); expected '" + expected +
+                               "': use another folder or remove it");
         continue;
       }
       const std::size_t tab = line.find('\t');

@@ -69,7 +69,8 @@ ChildOutcome runInChildProcess(const std::function<std::string()>& work, double 
   ::close(fds[1]);
 
   using Clock = std::chrono::steady_clock;
-  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadlineSeconds));
+  const auto deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadlineSeconds));
   std::string received;
   bool timedOut = false;
   char buffer[4096];
@@ -111,7 +112,8 @@ ChildOutcome runInChildProcess(const std::function<std::string()>& work, double 
     outcome.problem = "error: " + received.substr(1);
   } else {
     outcome.kind = ChildOutcome::Kind::Failed;
-    outcome.problem = "error: the run ended without a result (exit code " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+    outcome.problem = "error: the run ended without a result (exit code " +
+                      std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
   }
   return outcome;
 }

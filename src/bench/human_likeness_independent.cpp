@@ -36,7 +36,8 @@ double authorsSubspaceDistance(const IndependentHandReference& reference, const 
   const KauthamSahSynergies& table = kauthamSahSynergies();
   Eigen::VectorXd offset(static_cast<Eigen::Index>(reference.tableSlots.size()));
   for (std::size_t j = 0; j < reference.tableSlots.size(); ++j)
-    offset(static_cast<Eigen::Index>(j)) = table.limits[j].normalise(q(reference.tableSlots[j])) - table.mean(static_cast<Eigen::Index>(j));
+    offset(static_cast<Eigen::Index>(j)) =
+        table.limits[j].normalise(q(reference.tableSlots[j])) - table.mean(static_cast<Eigen::Index>(j));
   return (reference.complementProjector * offset).norm();
 }
 

@@ -12,7 +12,17 @@ namespace {
 const char* const kStatusEnum =
     "status|Unknown status|Invalid start|Invalid goal|Unrecognized goal type|Timeout|Approximate solution|Exact "
     "solution|Crash|Abort";
-enum class OmplStatus { Unknown, InvalidStart, InvalidGoal, UnrecognizedGoal, Timeout, Approximate, Exact, Crash, Abort };
+enum class OmplStatus {
+  Unknown,
+  InvalidStart,
+  InvalidGoal,
+  UnrecognizedGoal,
+  Timeout,
+  Approximate,
+  Exact,
+  Crash,
+  Abort
+};
 
 bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
 
@@ -54,20 +64,27 @@ const std::vector<Property>& properties() {
       {"graph states INTEGER", [](const RunRecord& r) { return std::to_string(r.roadmapNodes); }},
       {"solution length REAL", [](const RunRecord& r) { return r.solved ? number(r.pathLength) : std::string(); }},
       {"solution segments INTEGER",
-       [](const RunRecord& r) { return r.solved && r.pathNodes > 0 ? std::to_string(r.pathNodes - 1) : std::string(); }},
+       [](const RunRecord& r) {
+         return r.solved && r.pathNodes > 0 ? std::to_string(r.pathNodes - 1) : std::string();
+       }},
       {"samples INTEGER", [](const RunRecord& r) { return std::to_string(r.samples); }},
       {"collision checks INTEGER", [](const RunRecord& r) { return std::to_string(r.collisionChecks); }},
       {"synergy subspace distance mean REAL",
-       [](const RunRecord& r) { return r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMean) : std::string(); }},
+       [](const RunRecord& r) {
+         return r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMean) : std::string();
+       }},
       {"synergy subspace distance max REAL",
-       [](const RunRecord& r) { return r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMax) : std::string(); }},
+       [](const RunRecord& r) {
+         return r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMax) : std::string();
+       }},
       {"mahalanobis distance mean REAL",
        [](const RunRecord& r) { return r.humanLikeness ? number(r.humanLikeness->mahalanobisMean) : std::string(); }},
       {"authors pmd distance mean REAL",
        [](const RunRecord& r) { return independentValue(r, &IndependentHumanLikeness::authorsSubspaceDistanceMean); }},
       {"authors pmd distance max REAL",
        [](const RunRecord& r) { return independentValue(r, &IndependentHumanLikeness::authorsSubspaceDistanceMax); }},
-      {"joint coupling REAL", [](const RunRecord& r) { return independentValue(r, &IndependentHumanLikeness::jointCoupling); }},
+      {"joint coupling REAL",
+       [](const RunRecord& r) { return independentValue(r, &IndependentHumanLikeness::jointCoupling); }},
       {"seed INTEGER", [](const RunRecord& r) { return std::to_string(r.seed); }},
   };
   return list;
@@ -88,7 +105,8 @@ std::string omplLogPlannerName(const std::string& planner) {
   return "pmdplan_" + token(planner);
 }
 
-std::filesystem::path omplLogPathForTask(const std::filesystem::path& path, const std::string& task, std::size_t taskCount) {
+std::filesystem::path omplLogPathForTask(const std::filesystem::path& path, const std::string& task,
+                                         std::size_t taskCount) {
   if (taskCount <= 1) return path;
   std::filesystem::path result = path;
   result.replace_filename(path.stem().string() + "." + task + path.extension().string());
@@ -97,8 +115,8 @@ std::filesystem::path omplLogPathForTask(const std::filesystem::path& path, cons
 
 std::string omplBenchmarkLog(const std::vector<RunRecord>& records, const std::string& task,
                              const std::vector<std::string>& planners, const OmplLogContext& context) {
-  std::string log = "OMPL version " + std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
-                    std::to_string(OMPL_PATCH_VERSION) + "\n";
+  std::string log = "OMPL version " + std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) +
+                    "." + std::to_string(OMPL_PATCH_VERSION) + "\n";
   log += "Experiment " + token(task) + "\n";
   log += "Running on " + token(context.hostname) + "\n";
   log += "Starting at " + context.startTime + "\n";

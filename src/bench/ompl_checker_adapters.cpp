@@ -18,10 +18,13 @@ void setStateFromConfiguration(const PlanningSpace& space, const Configuration& 
   for (int i = 0; i < space.dof(); ++i) values[i] = unit[i];
 }
 
-OmplStateChecker::OmplStateChecker(const ompl::base::SpaceInformationPtr& si, const PlanningSpace& space, StateValidator& states)
+OmplStateChecker::OmplStateChecker(const ompl::base::SpaceInformationPtr& si, const PlanningSpace& space,
+                                   StateValidator& states)
     : ompl::base::StateValidityChecker(si), space_(space), states_(states) {}
 
-bool OmplStateChecker::isValid(const ompl::base::State* state) const { return isValid(configurationOfState(space_, state)); }
+bool OmplStateChecker::isValid(const ompl::base::State* state) const {
+  return isValid(configurationOfState(space_, state));
+}
 
 bool OmplStateChecker::isValid(const Configuration& q) const {
   ++checks_;

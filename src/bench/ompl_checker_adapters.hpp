@@ -17,13 +17,13 @@ void setStateFromConfiguration(const PlanningSpace& space, const Configuration& 
 
 /// Counts the states it is asked about (OMPL's planners check each drawn state once).
 class OmplStateChecker final : public ompl::base::StateValidityChecker {
-public:
+ public:
   OmplStateChecker(const ompl::base::SpaceInformationPtr& si, const PlanningSpace& space, StateValidator& states);
   bool isValid(const ompl::base::State* state) const override;
   bool isValid(const Configuration& q) const;
   std::size_t checks() const { return checks_; }
 
-private:
+ private:
   const PlanningSpace& space_;
   StateValidator& states_;
   mutable std::size_t checks_ = 0;
@@ -32,10 +32,10 @@ private:
 /// OMPL expects checkMotion to check the end state too (RRTConnect extends to unchecked states),
 /// while our MotionValidator takes both ends as checked: the end is checked here first.
 class OmplMotionChecker final : public ompl::base::MotionValidator {
-public:
+ public:
   /// `stateChecker` checks (and counts) the end states.
-  OmplMotionChecker(const ompl::base::SpaceInformationPtr& si, const PlanningSpace& space, const OmplStateChecker& stateChecker,
-                    pmdplan::MotionValidator& motions);
+  OmplMotionChecker(const ompl::base::SpaceInformationPtr& si, const PlanningSpace& space,
+                    const OmplStateChecker& stateChecker, pmdplan::MotionValidator& motions);
   bool checkMotion(const ompl::base::State* s1, const ompl::base::State* s2) const override;
   /// KPIECE's form: on a collision, the last valid state along the motion and its fraction. Our
   /// checker only answers yes or no, so the motion is walked in pieces of at most `kPieceLength`
@@ -46,7 +46,7 @@ public:
 
   static constexpr double kPieceLength = 0.05;
 
-private:
+ private:
   const PlanningSpace& space_;
   const OmplStateChecker& stateChecker_;
   pmdplan::MotionValidator& motions_;

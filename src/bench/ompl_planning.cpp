@@ -1,10 +1,5 @@
 #include "pmdplan/bench/ompl_planning.hpp"
 
-#include <chrono>
-#include <functional>
-#include <stdexcept>
-#include <utility>
-
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/ScopedState.h>
@@ -19,10 +14,15 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include <chrono>
+#include <functional>
+#include <stdexcept>
+#include <utility>
+
 #include "ompl_checker_adapters.hpp"
 #include "ompl_pmd_state_sampler.hpp"
-#include "pmdplan/planning/hand_sampling_mode.hpp"
 #include "pmdplan/bench/ompl_task_space.hpp"
+#include "pmdplan/planning/hand_sampling_mode.hpp"
 
 namespace pmdplan {
 namespace {
@@ -39,8 +39,12 @@ PlannerFactory make() {
 
 const std::vector<std::pair<std::string, PlannerFactory>>& plannerFactories() {
   static const std::vector<std::pair<std::string, PlannerFactory>> factories = {
-      {"RRTConnect", make<og::RRTConnect>()}, {"PRM", make<og::PRM>()},           {"LazyPRM", make<og::LazyPRM>()},
-      {"KPIECE1", make<og::KPIECE1>()},       {"BKPIECE1", make<og::BKPIECE1>()}, {"EST", make<og::EST>()},
+      {"RRTConnect", make<og::RRTConnect>()},
+      {"PRM", make<og::PRM>()},
+      {"LazyPRM", make<og::LazyPRM>()},
+      {"KPIECE1", make<og::KPIECE1>()},
+      {"BKPIECE1", make<og::BKPIECE1>()},
+      {"EST", make<og::EST>()},
       {"RRT", make<og::RRT>()},
   };
   return factories;

@@ -1,12 +1,12 @@
 #include "pmdplan/bench/ompl_pmd_planner.hpp"
 
-#include <limits>
-#include <stdexcept>
-
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
+
+#include <limits>
+#include <stdexcept>
 
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
 
@@ -20,8 +20,9 @@ struct TerminationRequested {};
 
 /// Our StateValidator over the space information's validity checker.
 class SpaceInformationStates final : public StateValidator {
-public:
-  SpaceInformationStates(const ob::SpaceInformationPtr& si, std::function<void(const Configuration&, ob::State*)> toState)
+ public:
+  SpaceInformationStates(const ob::SpaceInformationPtr& si,
+                         std::function<void(const Configuration&, ob::State*)> toState)
       : si_(si), toState_(std::move(toState)), scratch_(si->allocState()) {}
   SpaceInformationStates(const SpaceInformationStates&) = delete;
   ~SpaceInformationStates() override { si_->freeState(scratch_); }
@@ -36,7 +37,7 @@ public:
   }
   std::size_t checkCount() const override { return checks_; }
 
-private:
+ private:
   ob::SpaceInformationPtr si_;
   std::function<void(const Configuration&, ob::State*)> toState_;
   ob::State* scratch_;
@@ -45,8 +46,9 @@ private:
 
 /// Our MotionValidator over the space information's motion validator.
 class SpaceInformationMotions final : public MotionValidator {
-public:
-  SpaceInformationMotions(const ob::SpaceInformationPtr& si, std::function<void(const Configuration&, ob::State*)> toState)
+ public:
+  SpaceInformationMotions(const ob::SpaceInformationPtr& si,
+                          std::function<void(const Configuration&, ob::State*)> toState)
       : si_(si), toState_(std::move(toState)), from_(si->allocState()), to_(si->allocState()) {}
   SpaceInformationMotions(const SpaceInformationMotions&) = delete;
   ~SpaceInformationMotions() override {
@@ -61,7 +63,7 @@ public:
   }
   std::size_t statesChecked() const override { return checks_; }
 
-private:
+ private:
   ob::SpaceInformationPtr si_;
   std::function<void(const Configuration&, ob::State*)> toState_;
   ob::State* from_;
@@ -80,11 +82,16 @@ void declare(ob::ParamSet& set, const std::string& name, std::function<void(T)> 
 
 ob::PlannerStatus::StatusType omplStatus(PlannerStatus status) {
   switch (status) {
-    case PlannerStatus::Solved: return ob::PlannerStatus::EXACT_SOLUTION;
-    case PlannerStatus::InvalidStart: return ob::PlannerStatus::INVALID_START;
-    case PlannerStatus::InvalidGoal: return ob::PlannerStatus::INVALID_GOAL;
-    case PlannerStatus::SampleLimit: return ob::PlannerStatus::ABORT;
-    default: return ob::PlannerStatus::TIMEOUT;
+    case PlannerStatus::Solved:
+      return ob::PlannerStatus::EXACT_SOLUTION;
+    case PlannerStatus::InvalidStart:
+      return ob::PlannerStatus::INVALID_START;
+    case PlannerStatus::InvalidGoal:
+      return ob::PlannerStatus::INVALID_GOAL;
+    case PlannerStatus::SampleLimit:
+      return ob::PlannerStatus::ABORT;
+    default:
+      return ob::PlannerStatus::TIMEOUT;
   }
 }
 
@@ -97,7 +104,8 @@ OmplPmdPlanner::OmplPmdPlanner(const ob::SpaceInformationPtr& si, PlanningSpace 
       mode_(mode),
       synergies_(std::move(synergies)),
       parameters_(PlannerParameters::defaultsFor(mode)) {
-  if (mode_ == HandSamplingMode::Synergy && !synergies_) throw std::invalid_argument("OmplPmdPlanner: the PMD mode needs a synergy model");
+  if (mode_ == HandSamplingMode::Synergy && !synergies_)
+    throw std::invalid_argument("OmplPmdPlanner: the PMD mode needs a synergy model");
   specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
   specs_.approximateSolutions = false;
   specs_.optimizingPaths = false;
@@ -112,31 +120,45 @@ OmplPmdPlanner::~OmplPmdPlanner() { releaseDataStates(); }
 void OmplPmdPlanner::declareParameters() {
   auto& p = parameters_;
   auto& set = params();
-  declare<double>(set, "initial_arm_half_size", [&p](double v) { p.initialArmHalfSize = v; }, [&p] { return p.initialArmHalfSize; },
-                             "0.0001:0.0001:1.");
-  declare<bool>(set, "linear_arm_box_growth", [&p](bool v) { p.armBoxGrowth = v ? ArmBoxGrowth::Linear : ArmBoxGrowth::Factorial; },
-                           [&p] { return p.armBoxGrowth == ArmBoxGrowth::Linear; }, "0,1");
-  declare<unsigned>(set, "neighbour_count", [&p](unsigned v) { p.neighbourCount = v; },
-                               [&p] { return static_cast<unsigned>(p.neighbourCount); }, "1:1:100");
-  declare<double>(set, "neighbour_threshold_factor", [&p](double v) { p.neighbourThresholdFactor = v; },
-                             [&p] { return p.neighbourThresholdFactor; }, "0.1:0.1:10.");
-  declare<int>(set, "arm_trials", [&p](int v) { p.armTrials = v; }, [&p] { return p.armTrials; }, "1:1:100");
-  declare<int>(set, "hand_trials", [&p](int v) { p.handTrials = v; }, [&p] { return p.handTrials; }, "1:1:100");
-  declare<unsigned>(set, "min_sweep_visits", [&p](unsigned v) { p.minSweepVisits = v; },
-                               [&p] { return static_cast<unsigned>(p.minSweepVisits); }, "1:1:100");
-  declare<unsigned long>(set, "max_samples", [&p](unsigned long v) { p.maxSamples = v; },
-                                    [&p] { return static_cast<unsigned long>(p.maxSamples); }, "");
-  declare<double>(set, "kappa", [&p](double v) { p.pmdBox.kappa = v; }, [&p] { return p.pmdBox.kappa; }, "0.1:0.1:5.");
-  declare<int>(set, "max_pmds", [&p](int v) { p.pmdBox.maxDirections = v; }, [&p] { return p.pmdBox.maxDirections; }, "1:1:12");
-  declare<bool>(set, "smooth", [&p](bool v) { p.smooth = v; }, [&p] { return p.smooth; }, "0,1");
-  declare<unsigned long>(set, "seed", [&p](unsigned long v) { p.seed = v; }, [&p] { return static_cast<unsigned long>(p.seed); }, "");
+  declare<double>(
+      set, "initial_arm_half_size", [&p](double v) { p.initialArmHalfSize = v; }, [&p] { return p.initialArmHalfSize; },
+      "0.0001:0.0001:1.");
+  declare<bool>(
+      set, "linear_arm_box_growth",
+      [&p](bool v) { p.armBoxGrowth = v ? ArmBoxGrowth::Linear : ArmBoxGrowth::Factorial; },
+      [&p] { return p.armBoxGrowth == ArmBoxGrowth::Linear; }, "0,1");
+  declare<unsigned>(
+      set, "neighbour_count", [&p](unsigned v) { p.neighbourCount = v; },
+      [&p] { return static_cast<unsigned>(p.neighbourCount); }, "1:1:100");
+  declare<double>(
+      set, "neighbour_threshold_factor", [&p](double v) { p.neighbourThresholdFactor = v; },
+      [&p] { return p.neighbourThresholdFactor; }, "0.1:0.1:10.");
+  declare<int>(
+      set, "arm_trials", [&p](int v) { p.armTrials = v; }, [&p] { return p.armTrials; }, "1:1:100");
+  declare<int>(
+      set, "hand_trials", [&p](int v) { p.handTrials = v; }, [&p] { return p.handTrials; }, "1:1:100");
+  declare<unsigned>(
+      set, "min_sweep_visits", [&p](unsigned v) { p.minSweepVisits = v; },
+      [&p] { return static_cast<unsigned>(p.minSweepVisits); }, "1:1:100");
+  declare<unsigned long>(
+      set, "max_samples", [&p](unsigned long v) { p.maxSamples = v; },
+      [&p] { return static_cast<unsigned long>(p.maxSamples); }, "");
+  declare<double>(
+      set, "kappa", [&p](double v) { p.pmdBox.kappa = v; }, [&p] { return p.pmdBox.kappa; }, "0.1:0.1:5.");
+  declare<int>(
+      set, "max_pmds", [&p](int v) { p.pmdBox.maxDirections = v; }, [&p] { return p.pmdBox.maxDirections; }, "1:1:12");
+  declare<bool>(
+      set, "smooth", [&p](bool v) { p.smooth = v; }, [&p] { return p.smooth; }, "0,1");
+  declare<unsigned long>(
+      set, "seed", [&p](unsigned long v) { p.seed = v; }, [&p] { return static_cast<unsigned long>(p.seed); }, "");
 }
 
 void OmplPmdPlanner::setup() {
   ob::Planner::setup();
   const auto* bounded = si_->getStateSpace()->as<ob::RealVectorStateSpace>();
   if (!bounded || si_->getStateDimension() != static_cast<unsigned>(space_.dof()))
-    throw std::invalid_argument("OmplPmdPlanner: expected a RealVectorStateSpace of " + std::to_string(space_.dof()) + " dimensions");
+    throw std::invalid_argument("OmplPmdPlanner: expected a RealVectorStateSpace of " + std::to_string(space_.dof()) +
+                                " dimensions");
   const auto& bounds = bounded->getBounds();
   boundsLow_ = bounds.low;
   boundsExtent_.resize(bounds.low.size());
@@ -146,7 +168,8 @@ void OmplPmdPlanner::setup() {
 Configuration OmplPmdPlanner::configurationOf(const ob::State* state) const {
   const double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
   Eigen::VectorXd unit(space_.dof());
-  for (int i = 0; i < space_.dof(); ++i) unit[i] = (values[i] - boundsLow_[static_cast<std::size_t>(i)]) / boundsExtent_[static_cast<std::size_t>(i)];
+  for (int i = 0; i < space_.dof(); ++i)
+    unit[i] = (values[i] - boundsLow_[static_cast<std::size_t>(i)]) / boundsExtent_[static_cast<std::size_t>(i)];
   return space_.denormalise(unit);
 }
 
@@ -180,9 +203,11 @@ ob::PlannerStatus OmplPmdPlanner::solve(const ob::PlannerTerminationCondition& p
   releaseDataStates();
   auto run = std::make_shared<Run>(si_, toState);
   PlannerParameters parameters = parameters_;
-  if (parameters.seed == 0) parameters.seed = static_cast<std::uint64_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
+  if (parameters.seed == 0)
+    parameters.seed = static_cast<std::uint64_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
   planner_ = std::make_unique<PmdRoadmapPlanner>(space_, run->states, run->motions,
-                                                 makeHandSampler(mode_, space_, synergies_.get(), parameters.pmdBox), parameters);
+                                                 makeHandSampler(mode_, space_, synergies_.get(), parameters.pmdBox),
+                                                 parameters);
   planner_->setStartAndGoal(startConfiguration, goalConfiguration);
   planner_->setProgressCallback([run, &ptc](const PlannerProgress&) {
     if (ptc()) throw TerminationRequested{};
@@ -233,13 +258,17 @@ void OmplPmdPlanner::getPlannerData(ob::PlannerData& data) const {
     ob::State* state = dataStates_.emplace_back(si_->allocState());
     setState(roadmap.node(i).configuration, state);
     // The planner adds c_ini first and c_goal second.
-    if (i == 0) data.addStartVertex(ob::PlannerDataVertex(state, 1));
-    else if (i == 1) data.addGoalVertex(ob::PlannerDataVertex(state, 2));
-    else data.addVertex(ob::PlannerDataVertex(state));
+    if (i == 0)
+      data.addStartVertex(ob::PlannerDataVertex(state, 1));
+    else if (i == 1)
+      data.addGoalVertex(ob::PlannerDataVertex(state, 2));
+    else
+      data.addVertex(ob::PlannerDataVertex(state));
   }
   for (NodeIndex i = 0; i < roadmap.nodeCount(); ++i)
     for (const RoadmapEdge& edge : roadmap.edges(i))
-      data.addEdge(static_cast<unsigned>(i), static_cast<unsigned>(edge.target), ob::PlannerDataEdge(), ob::Cost(edge.length));
+      data.addEdge(static_cast<unsigned>(i), static_cast<unsigned>(edge.target), ob::PlannerDataEdge(),
+                   ob::Cost(edge.length));
 }
 
 }  // namespace pmdplan

@@ -42,8 +42,9 @@ void OmplPmdStateSampler::sampleGaussian(ob::State* state, const ob::State* mean
   uniform_.sampleGaussian(state, mean, stdDev);
 }
 
-void installPmdStateSampler(ob::StateSpace& stateSpace, const PlanningSpace& space, std::shared_ptr<const HandSampler> hands,
-                            const Configuration& start, const Configuration& goal, double initialArmHalfSize) {
+void installPmdStateSampler(ob::StateSpace& stateSpace, const PlanningSpace& space,
+                            std::shared_ptr<const HandSampler> hands, const Configuration& start,
+                            const Configuration& goal, double initialArmHalfSize) {
   stateSpace.setStateSamplerAllocator([&space, hands, start, goal, initialArmHalfSize](const ob::StateSpace* s) {
     return std::make_shared<OmplPmdStateSampler>(s, space, hands, start, goal, initialArmHalfSize);
   });

@@ -9,10 +9,10 @@
 // planner's sweeps grow it. Deterministic: our RandomSource is seeded from the sampler's ompl::RNG
 // (ompl::RNG::setSeed). sampleUniformNear and sampleGaussian are the uniform space's (clamped to
 // the box) around the given state.
-#include <memory>
-
 #include <ompl/base/StateSampler.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+
+#include <memory>
 
 #include "pmdplan/core/random_source.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
@@ -22,7 +22,7 @@
 namespace pmdplan {
 
 class OmplPmdStateSampler final : public ompl::base::StateSampler {
-public:
+ public:
   static constexpr double kDrawsPerDoubling = 200.0;
 
   /// `space` and `hands` are shared with the caller and must outlive the sampler.
@@ -37,7 +37,7 @@ public:
   /// rho_a of the next draw.
   double armHalfSize() const;
 
-private:
+ private:
   const PlanningSpace& space_;
   std::shared_ptr<const HandSampler> hands_;
   ArmSegmentSampler arms_;

@@ -5,15 +5,17 @@ namespace pmdplan {
 const std::vector<PlannerEntry>& plannerRoster() {
   static const std::vector<PlannerEntry> roster = [] {
     std::vector<PlannerEntry> entries = {
-      {"pmd", PlannerFamily::PmdRoadmap, HandSamplingMode::Synergy, "", "the paper's planner, hands from the PMD subspace"},
-      {"full", PlannerFamily::PmdRoadmap, HandSamplingMode::FullSpace, "", "the same roadmap, hands over the whole joint box"},
-      {"ompl:RRTConnect", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRTConnect", "OMPL bidirectional RRT"},
-      {"ompl:PRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "PRM", "OMPL probabilistic roadmap"},
-      {"ompl:LazyPRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "LazyPRM", "OMPL PRM with lazy edge checks"},
-      {"ompl:KPIECE1", PlannerFamily::Ompl, HandSamplingMode::Synergy, "KPIECE1", "OMPL KPIECE"},
-      {"ompl:BKPIECE1", PlannerFamily::Ompl, HandSamplingMode::Synergy, "BKPIECE1", "OMPL bidirectional KPIECE"},
-      {"ompl:EST", PlannerFamily::Ompl, HandSamplingMode::Synergy, "EST", "OMPL expansive space trees"},
-      {"ompl:RRT", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRT", "OMPL RRT"},
+        {"pmd", PlannerFamily::PmdRoadmap, HandSamplingMode::Synergy, "",
+         "the paper's planner, hands from the PMD subspace"},
+        {"full", PlannerFamily::PmdRoadmap, HandSamplingMode::FullSpace, "",
+         "the same roadmap, hands over the whole joint box"},
+        {"ompl:RRTConnect", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRTConnect", "OMPL bidirectional RRT"},
+        {"ompl:PRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "PRM", "OMPL probabilistic roadmap"},
+        {"ompl:LazyPRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "LazyPRM", "OMPL PRM with lazy edge checks"},
+        {"ompl:KPIECE1", PlannerFamily::Ompl, HandSamplingMode::Synergy, "KPIECE1", "OMPL KPIECE"},
+        {"ompl:BKPIECE1", PlannerFamily::Ompl, HandSamplingMode::Synergy, "BKPIECE1", "OMPL bidirectional KPIECE"},
+        {"ompl:EST", PlannerFamily::Ompl, HandSamplingMode::Synergy, "EST", "OMPL expansive space trees"},
+        {"ompl:RRT", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRT", "OMPL RRT"},
     };
     const std::size_t count = entries.size();
     for (std::size_t i = 0; i < count; ++i) {

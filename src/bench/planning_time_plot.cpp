@@ -67,23 +67,29 @@ std::string planningTimeBoxPlotSvg(const std::vector<RunRecord>& records, const 
   std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(width) + "\" height=\"" + px(height) +
                     "\" viewBox=\"0 0 " + px(width) + " " + px(height) + "\">\n";
   svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  svg += label(left, 22.0, "Planning time per run (log scale): whiskers min-max, failures at the time they stopped, successes/runs under each box",
+  svg += label(left, 22.0,
+               "Planning time per run (log scale): whiskers min-max, failures at the time they stopped, successes/runs "
+               "under each box",
                "font-size=\"13\"");
   for (int d = lowDecade; d <= highDecade; ++d) {
     const double yy = y(std::pow(10.0, d));
     svg += line(left, yy, left + plotWidth, yy, "#dddddd");
     svg += label(left - 8.0, yy + 4.0, decadeLabel(d), "font-size=\"11\" text-anchor=\"end\"");
   }
-  svg += label(18.0, top + plotHeight / 2.0, "seconds", "font-size=\"12\" transform=\"rotate(-90 18 " + px(top + plotHeight / 2.0) + ")\" text-anchor=\"middle\"");
+  svg +=
+      label(18.0, top + plotHeight / 2.0, "seconds",
+            "font-size=\"12\" transform=\"rotate(-90 18 " + px(top + plotHeight / 2.0) + ")\" text-anchor=\"middle\"");
   svg += line(left, top, left, top + plotHeight, "#333333");
   svg += line(left, top + plotHeight, left + plotWidth, top + plotHeight, "#333333");
   const double limitY = y(timeLimitSeconds);
   svg += line(left, limitY, left + plotWidth, limitY, "#c00000", "stroke-dasharray=\"6 4\"");
-  svg += label(left + plotWidth - 4.0, limitY - 4.0, "time limit", "font-size=\"11\" text-anchor=\"end\" fill=\"#c00000\"");
+  svg += label(left + plotWidth - 4.0, limitY - 4.0, "time limit",
+               "font-size=\"11\" text-anchor=\"end\" fill=\"#c00000\"");
 
   for (std::size_t t = 0; t < tasks.size(); ++t) {
     const double groupLeft = left + groupGap + static_cast<double>(t) * (groupWidth + groupGap);
-    svg += label(groupLeft + groupWidth / 2.0, top + plotHeight + 36.0, tasks[t], "font-size=\"12\" text-anchor=\"middle\"");
+    svg += label(groupLeft + groupWidth / 2.0, top + plotHeight + 36.0, tasks[t],
+                 "font-size=\"12\" text-anchor=\"middle\"");
     for (std::size_t p = 0; p < planners.size(); ++p) {
       std::vector<double> times;
       std::size_t successes = 0;
@@ -102,11 +108,13 @@ std::string planningTimeBoxPlotSvg(const std::vector<RunRecord>& records, const 
         svg += line(mid, q3, mid, y(times.back()), colour);
         svg += line(x + 5.0, y(times.front()), x + boxWidth - 5.0, y(times.front()), colour);
         svg += line(x + 5.0, y(times.back()), x + boxWidth - 5.0, y(times.back()), colour);
-        svg += "<rect x=\"" + px(x) + "\" y=\"" + px(q3) + "\" width=\"" + px(boxWidth) + "\" height=\"" + px(std::max(q1 - q3, 1.0)) +
-               "\" fill=\"" + colour + "\" fill-opacity=\"0.35\" stroke=\"" + colour + "\"/>\n";
+        svg += "<rect x=\"" + px(x) + "\" y=\"" + px(q3) + "\" width=\"" + px(boxWidth) + "\" height=\"" +
+               px(std::max(q1 - q3, 1.0)) + "\" fill=\"" + colour + "\" fill-opacity=\"0.35\" stroke=\"" + colour +
+               "\"/>\n";
         svg += line(x, q2, x + boxWidth, q2, colour, "stroke-width=\"2\"");
       }
-      svg += label(x + boxWidth / 2.0, top + plotHeight + 16.0, std::to_string(successes) + "/" + std::to_string(times.size()),
+      svg += label(x + boxWidth / 2.0, top + plotHeight + 16.0,
+                   std::to_string(successes) + "/" + std::to_string(times.size()),
                    "font-size=\"9\" text-anchor=\"middle\"");
     }
   }

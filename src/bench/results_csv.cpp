@@ -34,12 +34,12 @@ std::string runRecordsCsv(const std::vector<RunRecord>& records) {
   for (const RunRecord& r : records) {
     const bool hasPath = r.solved;
     const IndependentHumanLikeness* independent =
-      r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
-    csv += csvField(r.task) + "," + csvField(r.planner) + "," + std::to_string(r.run) + "," + std::to_string(r.seed) + "," +
-           (r.solved ? "1" : "0") + "," + number(r.planningTimeSeconds) + "," + number(r.smoothingTimeSeconds) + "," +
-           (r.valid ? "1" : "0") + "," + std::to_string(r.samples) + "," + std::to_string(r.armTrials) + "," +
-           std::to_string(r.maxTrials) + "," + number(r.finalArmHalfSize) + "," + csvField(nodesByHandDimensionText(r.nodesByHandDimension)) + "," +
-           std::to_string(r.roadmapNodes) + "," +
+        r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
+    csv += csvField(r.task) + "," + csvField(r.planner) + "," + std::to_string(r.run) + "," + std::to_string(r.seed) +
+           "," + (r.solved ? "1" : "0") + "," + number(r.planningTimeSeconds) + "," + number(r.smoothingTimeSeconds) +
+           "," + (r.valid ? "1" : "0") + "," + std::to_string(r.samples) + "," + std::to_string(r.armTrials) + "," +
+           std::to_string(r.maxTrials) + "," + number(r.finalArmHalfSize) + "," +
+           csvField(nodesByHandDimensionText(r.nodesByHandDimension)) + "," + std::to_string(r.roadmapNodes) + "," +
            (hasPath ? std::to_string(r.pathNodes) : "") + "," + (hasPath ? number(r.pathLength) : "") + "," +
            std::to_string(r.collisionChecks) + "," +
            (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMean) : "") + "," +

@@ -15,11 +15,16 @@ namespace {
 std::string shortNumber(double value) {
   char text[64];
   const double magnitude = std::fabs(value);
-  if (magnitude >= 1000.0) std::snprintf(text, sizeof text, "%.0f", value);
-  else if (magnitude >= 100.0) std::snprintf(text, sizeof text, "%.1f", value);
-  else if (magnitude >= 1.0) std::snprintf(text, sizeof text, "%.2f", value);
-  else if (magnitude >= 0.001 || magnitude == 0.0) std::snprintf(text, sizeof text, "%.4f", value);
-  else std::snprintf(text, sizeof text, "%.2e", value);
+  if (magnitude >= 1000.0)
+    std::snprintf(text, sizeof text, "%.0f", value);
+  else if (magnitude >= 100.0)
+    std::snprintf(text, sizeof text, "%.1f", value);
+  else if (magnitude >= 1.0)
+    std::snprintf(text, sizeof text, "%.2f", value);
+  else if (magnitude >= 0.001 || magnitude == 0.0)
+    std::snprintf(text, sizeof text, "%.4f", value);
+  else
+    std::snprintf(text, sizeof text, "%.2e", value);
   return text;
 }
 
@@ -52,8 +57,11 @@ std::string timeCell(const RunSummary& s) {
   if (s.planningTime.count == 0) return "– (" + std::to_string(s.succeeded) + "/" + std::to_string(s.runs) + ")";
   const double ms = 1e3 * s.planningTime.median;
   char text[64];
-  std::snprintf(text, sizeof text, ms >= 100.0 ? "%.0f ms (%zu/%zu)" : ms >= 10.0 ? "%.1f ms (%zu/%zu)" : "%.2f ms (%zu/%zu)", ms,
-                s.succeeded, s.runs);
+  std::snprintf(text, sizeof text,
+                ms >= 100.0  ? "%.0f ms (%zu/%zu)"
+                : ms >= 10.0 ? "%.1f ms (%zu/%zu)"
+                             : "%.2f ms (%zu/%zu)",
+                ms, s.succeeded, s.runs);
   return text;
 }
 
@@ -78,11 +86,15 @@ const RunSummary* bestOmpl(const std::vector<RunSummary>& summaries) {
 
 /// Median planning time of every planner on every task, and how pmd compares (a ratio above 1:
 /// pmd is faster). Only with pmd among the planners.
-std::string summaryMarkdown(const std::vector<std::vector<RunSummary>>& byTask, const std::vector<std::string>& planners) {
-  const auto at = [&](const std::string& name) { return std::find(planners.begin(), planners.end(), name) - planners.begin(); };
+std::string summaryMarkdown(const std::vector<std::vector<RunSummary>>& byTask,
+                            const std::vector<std::string>& planners) {
+  const auto at = [&](const std::string& name) {
+    return std::find(planners.begin(), planners.end(), name) - planners.begin();
+  };
   const auto pmd = static_cast<std::size_t>(at("pmd")), full = static_cast<std::size_t>(at("full"));
   if (pmd == planners.size()) return "";
-  const bool withOmpl = std::any_of(planners.begin(), planners.end(), [](const std::string& p) { return p.rfind("ompl:", 0) == 0; });
+  const bool withOmpl =
+      std::any_of(planners.begin(), planners.end(), [](const std::string& p) { return p.rfind("ompl:", 0) == 0; });
   std::string md = "### Summary: median planning time of the successful runs (successes/runs)\n\n| task |";
   for (const std::string& planner : planners) addCell(md, planner);
   if (full < planners.size()) md += " full / pmd |";
@@ -124,13 +136,15 @@ std::string medianRatio(const MetricSummary& full, const MetricSummary& pmd) {
 
 /// The paper's central claim (Table 2): how many times more samples, nodes and time the
 /// full-space baseline needs than pmd. Only with both among the planners.
-std::string claimMarkdown(const std::vector<std::vector<RunSummary>>& byTask, const std::vector<std::string>& planners) {
+std::string claimMarkdown(const std::vector<std::vector<RunSummary>>& byTask,
+                          const std::vector<std::string>& planners) {
   const auto pmd = static_cast<std::size_t>(std::find(planners.begin(), planners.end(), "pmd") - planners.begin());
   const auto full = static_cast<std::size_t>(std::find(planners.begin(), planners.end(), "full") - planners.begin());
   if (pmd == planners.size() || full == planners.size()) return "";
   std::string md =
       "### full / pmd: the paper's Table 2 claim\n\n"
-      "| task | samples, means | samples, medians | roadmap nodes, means | roadmap nodes, medians | planning time, means | "
+      "| task | samples, means | samples, medians | roadmap nodes, means | roadmap nodes, medians | planning time, "
+      "means | "
       "planning time, medians |\n|---|---|---|---|---|---|---|\n";
   for (const auto& summaries : byTask) {
     const RunSummary& f = summaries[full];
@@ -144,8 +158,9 @@ std::string claimMarkdown(const std::vector<std::vector<RunSummary>>& byTask, co
     addCell(md, medianRatio(f.planningTime, p.planningTime));
     md += "\n";
   }
-  md += "| paper, task 0 (Table 2, means of 100 runs) | 10.4× | – | 19.4× | – | 88.1× | – |\n\n"
-        "Over the successful runs of each planner. Samples: hand-arm draws, as the paper counts them.\n\n";
+  md +=
+      "| paper, task 0 (Table 2, means of 100 runs) | 10.4× | – | 19.4× | – | 88.1× | – |\n\n"
+      "Over the successful runs of each planner. Samples: hand-arm draws, as the paper counts them.\n\n";
   return md;
 }
 
@@ -156,7 +171,8 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
   const std::vector<MetricRow> rows = {
       {"planning time [s]", [](const RunSummary& s) -> const MetricSummary& { return s.planningTime; }},
       {"smoothing time [s]", [](const RunSummary& s) -> const MetricSummary& { return s.smoothingTime; }},
-      {"samples (hand-arm draws; OMPL: states checked)", [](const RunSummary& s) -> const MetricSummary& { return s.samples; }},
+      {"samples (hand-arm draws; OMPL: states checked)",
+       [](const RunSummary& s) -> const MetricSummary& { return s.samples; }},
       {"arm trials", [](const RunSummary& s) -> const MetricSummary& { return s.armTrials; }},
       {"max trials (j × h loops)", [](const RunSummary& s) -> const MetricSummary& { return s.maxTrials; }},
       {"final rho_a", [](const RunSummary& s) -> const MetricSummary& { return s.finalArmHalfSize; }},
@@ -164,8 +180,10 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
       {"path nodes", [](const RunSummary& s) -> const MetricSummary& { return s.pathNodes; }},
       {"path length (normalised)", [](const RunSummary& s) -> const MetricSummary& { return s.pathLength; }},
       {"collision checks", [](const RunSummary& s) -> const MetricSummary& { return s.collisionChecks; }},
-      {"synergy-subspace distance, mean", [](const RunSummary& s) -> const MetricSummary& { return s.subspaceDistanceMean; }},
-      {"synergy-subspace distance, max", [](const RunSummary& s) -> const MetricSummary& { return s.subspaceDistanceMax; }},
+      {"synergy-subspace distance, mean",
+       [](const RunSummary& s) -> const MetricSummary& { return s.subspaceDistanceMean; }},
+      {"synergy-subspace distance, max",
+       [](const RunSummary& s) -> const MetricSummary& { return s.subspaceDistanceMax; }},
       {"Mahalanobis distance, mean", [](const RunSummary& s) -> const MetricSummary& { return s.mahalanobisMean; }},
       {"authors' PMD-subspace distance, mean",
        [](const RunSummary& s) -> const MetricSummary& { return s.authorsSubspaceDistanceMean; }},
@@ -207,9 +225,10 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
     }
     md += "\n";
   }
-  md += "Cells: mean (median) over the successful runs; success over all runs. Human-likeness along the path "
-        "(normalised joint units; Mahalanobis under the synergy model; the authors' PMD subspace and the Fig. 7 "
-        "joint coupling, in [-1, 1], do not use the planner's model: docs/human_likeness.md).\n";
+  md +=
+      "Cells: mean (median) over the successful runs; success over all runs. Human-likeness along the path "
+      "(normalised joint units; Mahalanobis under the synergy model; the authors' PMD subspace and the Fig. 7 "
+      "joint coupling, in [-1, 1], do not use the planner's model: docs/human_likeness.md).\n";
   return md;
 }
 

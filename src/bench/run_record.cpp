@@ -1,7 +1,7 @@
 #include "pmdplan/bench/run_record.hpp"
 
-#include <charconv>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -15,11 +15,16 @@ constexpr char kSeparator = '\t';
 std::string escapedText(const std::string& text) {
   std::string out;
   for (const char c : text) {
-    if (c == '\\') out += "\\\\";
-    else if (c == '\t') out += "\\t";
-    else if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else out += c;
+    if (c == '\\')
+      out += "\\\\";
+    else if (c == '\t')
+      out += "\\t";
+    else if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else
+      out += c;
   }
   return out;
 }
@@ -33,11 +38,16 @@ std::optional<std::string> unescapedText(const std::string& text) {
     }
     if (++i >= text.size()) return std::nullopt;
     const char c = text[i];
-    if (c == '\\') out += '\\';
-    else if (c == 't') out += '\t';
-    else if (c == 'n') out += '\n';
-    else if (c == 'r') out += '\r';
-    else return std::nullopt;
+    if (c == '\\')
+      out += '\\';
+    else if (c == 't')
+      out += '\t';
+    else if (c == 'n')
+      out += '\n';
+    else if (c == 'r')
+      out += '\r';
+    else
+      return std::nullopt;
   }
   return out;
 }
@@ -67,8 +77,8 @@ bool parseDimensionCounts(const std::string& text, std::map<int, std::size_t>& c
     const std::size_t colon = item.find(':');
     int dimension = 0;
     std::size_t nodes = 0;
-    if (colon == std::string::npos || !parse(item.substr(0, colon), dimension) || !parse(item.substr(colon + 1), nodes) ||
-        !counts.emplace(dimension, nodes).second)
+    if (colon == std::string::npos || !parse(item.substr(0, colon), dimension) ||
+        !parse(item.substr(colon + 1), nodes) || !counts.emplace(dimension, nodes).second)
       return false;
     start = end + 1;
   }
@@ -78,8 +88,10 @@ bool parseDimensionCounts(const std::string& text, std::map<int, std::size_t>& c
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> fields(1);
   for (const char c : line) {
-    if (c == kSeparator) fields.emplace_back();
-    else fields.back() += c;
+    if (c == kSeparator)
+      fields.emplace_back();
+    else
+      fields.back() += c;
   }
   return fields;
 }
@@ -98,14 +110,29 @@ std::string nodesByHandDimensionText(const std::map<int, std::size_t>& counts) {
 }
 
 std::string encodeRunRecord(const RunRecord& r) {
-  std::vector<std::string> fields = {
-      "run-record-2", escapedText(r.task), escapedText(r.planner), number(r.run), number(r.seed), r.solved ? "1" : "0",
-      r.valid ? "1" : "0", number(r.planningTimeSeconds), number(r.smoothingTimeSeconds), number(r.samples),
-      number(r.armTrials), number(r.maxTrials), number(r.finalArmHalfSize), nodesByHandDimensionText(r.nodesByHandDimension),
-      number(r.roadmapNodes), number(r.pathNodes), number(r.pathLength), number(r.collisionChecks),
-      r.humanLikeness ? "1" : "0", number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0),
-      number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0),
-      number(r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0), escapedText(r.failure)};
+  std::vector<std::string> fields = {"run-record-2",
+                                     escapedText(r.task),
+                                     escapedText(r.planner),
+                                     number(r.run),
+                                     number(r.seed),
+                                     r.solved ? "1" : "0",
+                                     r.valid ? "1" : "0",
+                                     number(r.planningTimeSeconds),
+                                     number(r.smoothingTimeSeconds),
+                                     number(r.samples),
+                                     number(r.armTrials),
+                                     number(r.maxTrials),
+                                     number(r.finalArmHalfSize),
+                                     nodesByHandDimensionText(r.nodesByHandDimension),
+                                     number(r.roadmapNodes),
+                                     number(r.pathNodes),
+                                     number(r.pathLength),
+                                     number(r.collisionChecks),
+                                     r.humanLikeness ? "1" : "0",
+                                     number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0),
+                                     number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0),
+                                     number(r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0),
+                                     escapedText(r.failure)};
   // The measures independent of the planner's model (last, so older fields keep their places).
   const IndependentHumanLikeness* independent =
       r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
@@ -139,12 +166,13 @@ std::optional<RunRecord> decodeRunRecord(const std::string& text) {
                   parse(f[10], r.armTrials) && parse(f[11], r.maxTrials) && parse(f[12], r.finalArmHalfSize) &&
                   parseDimensionCounts(f[13], r.nodesByHandDimension) && parse(f[14], r.roadmapNodes) &&
                   parse(f[15], r.pathNodes) && parse(f[16], r.pathLength) && parse(f[17], r.collisionChecks) &&
-                  flag(f[18], hasHumanLikeness) && parse(f[19], h.subspaceDistanceMean) && parse(f[20], h.subspaceDistanceMax) &&
-                  parse(f[21], h.mahalanobisMean);
+                  flag(f[18], hasHumanLikeness) && parse(f[19], h.subspaceDistanceMean) &&
+                  parse(f[20], h.subspaceDistanceMax) && parse(f[21], h.mahalanobisMean);
   bool hasIndependent = false;
   IndependentHumanLikeness independent;
   const bool independentOk = flag(f[23], hasIndependent) && parse(f[24], independent.authorsSubspaceDistanceMean) &&
-                             parse(f[25], independent.authorsSubspaceDistanceMax) && parse(f[26], independent.jointCoupling);
+                             parse(f[25], independent.authorsSubspaceDistanceMax) &&
+                             parse(f[26], independent.jointCoupling);
   if (!ok || !independentOk) return std::nullopt;
   if (hasIndependent) h.independent = independent;
   if (hasHumanLikeness) r.humanLikeness = h;

@@ -59,9 +59,12 @@ RunSummary summariseRuns(const std::vector<RunRecord>& records, const std::strin
   s.pathNodes = metric([](const RunRecord& r) { return static_cast<double>(r.pathNodes); });
   s.pathLength = metric([](const RunRecord& r) { return r.pathLength; });
   s.collisionChecks = metric([](const RunRecord& r) { return static_cast<double>(r.collisionChecks); });
-  s.subspaceDistanceMean = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0; });
-  s.subspaceDistanceMax = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0; });
-  s.mahalanobisMean = metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0; });
+  s.subspaceDistanceMean =
+      metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0; });
+  s.subspaceDistanceMax =
+      metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0; });
+  s.mahalanobisMean =
+      metric([](const RunRecord& r) { return r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0; });
   const auto independentMetric = [&](double IndependentHumanLikeness::*field) {
     std::vector<double> values;
     for (const RunRecord* r : successes)

@@ -20,7 +20,8 @@ TaskBench::TaskBench(Task task, CheckerKind checker, double toleranceMetres, con
     if (!report.free()) {
       std::string pairs;
       for (const auto& [a, b] : report.pairs) pairs += (pairs.empty() ? "" : ", ") + a + " - " + b;
-      throw InputError(task_->file.string(), label, std::string("the ") + label + " configuration is in collision: " + pairs);
+      throw InputError(task_->file.string(), label,
+                       std::string("the ") + label + " configuration is in collision: " + pairs);
     }
   }
 }

@@ -23,7 +23,8 @@ void toPlain(const Eigen::Isometry3d& pose, double* out) {
 
 /// sin and cos of `count` values, in one loop of independent polynomials (it vectorises; built
 /// for AVX-512, AVX2 and the SSE2 baseline, the loader picks one for the running CPU).
-[[gnu::target_clones("avx512f", "avx2", "default")]] void sinCosArray(const double* x, double* s, double* c, int count) {
+[[gnu::target_clones("avx512f", "avx2", "default")]] void sinCosArray(const double* x, double* s, double* c,
+                                                                      int count) {
   for (int i = 0; i < count; ++i) portable::sinCos(x[i], s[i], c[i]);
 }
 
@@ -92,11 +93,13 @@ template <int N>
     } else {
       for (int r = 0; r < 3; ++r)
         for (int k = 0; k < 3; ++k)
-          for (int l = 0; l < N; ++l) c.v[r * 3 + k][l] = p.v[r * 3][l] * o[k] + p.v[r * 3 + 1][l] * o[3 + k] + p.v[r * 3 + 2][l] * o[6 + k];
+          for (int l = 0; l < N; ++l)
+            c.v[r * 3 + k][l] = p.v[r * 3][l] * o[k] + p.v[r * 3 + 1][l] * o[3 + k] + p.v[r * 3 + 2][l] * o[6 + k];
     }
     if (step.translates) {
       for (int r = 0; r < 3; ++r)
-        for (int l = 0; l < N; ++l) c.v[9 + r][l] = p.v[r * 3][l] * o[9] + p.v[r * 3 + 1][l] * o[10] + p.v[r * 3 + 2][l] * o[11] + p.v[9 + r][l];
+        for (int l = 0; l < N; ++l)
+          c.v[9 + r][l] = p.v[r * 3][l] * o[9] + p.v[r * 3 + 1][l] * o[10] + p.v[r * 3 + 2][l] * o[11] + p.v[9 + r][l];
     } else {
       for (int r = 0; r < 3; ++r)
         for (int l = 0; l < N; ++l) c.v[9 + r][l] = p.v[9 + r][l];
@@ -127,14 +130,16 @@ template <int N>
           for (int k = 0; k < 3; ++k)
             for (int l = 0; l < N; ++l) row[k][l] = c.v[r * 3 + k][l];
           for (int k = 0; k < 3; ++k)
-            for (int l = 0; l < N; ++l) c.v[r * 3 + k][l] = row[0][l] * m[k][l] + row[1][l] * m[3 + k][l] + row[2][l] * m[6 + k][l];
+            for (int l = 0; l < N; ++l)
+              c.v[r * 3 + k][l] = row[0][l] * m[k][l] + row[1][l] * m[3 + k][l] + row[2][l] * m[6 + k][l];
         }
       }
     } else if (step.motion == 2) {
       const double* value = values + step.joint * N;
       for (int r = 0; r < 3; ++r)
         for (int l = 0; l < N; ++l)
-          c.v[9 + r][l] += value[l] * (c.v[r * 3][l] * step.axis[0] + c.v[r * 3 + 1][l] * step.axis[1] + c.v[r * 3 + 2][l] * step.axis[2]);
+          c.v[9 + r][l] += value[l] * (c.v[r * 3][l] * step.axis[0] + c.v[r * 3 + 1][l] * step.axis[1] +
+                                       c.v[r * 3 + 2][l] * step.axis[2]);
     }
     poses[step.childLink] = c;
   }
@@ -189,7 +194,8 @@ BatchedForwardKinematics::BatchedForwardKinematics(const RobotModel& model, cons
     step.motion = joint.type == JointType::Fixed ? 0 : joint.type == JointType::Prismatic ? 2 : 1;
     toPlain(joint.origin, step.origin);
     for (int a = 0; a < 3; ++a) step.axis[a] = joint.axis[a];
-    if (joint.axis.x() == 0.0 && joint.axis.y() == 0.0 && std::abs(joint.axis.z()) == 1.0) step.axisZ = joint.axis.z() > 0 ? 1 : -1;
+    if (joint.axis.x() == 0.0 && joint.axis.y() == 0.0 && std::abs(joint.axis.z()) == 1.0)
+      step.axisZ = joint.axis.z() > 0 ? 1 : -1;
     // A rotation whose entries are 0 or +-1 up to rounding (cos 90 deg is 6e-17 in doubles).
     step.permutes = true;
     for (int k = 0; k < 3; ++k) {
@@ -218,7 +224,8 @@ void BatchedForwardKinematics::computeBatch(const double* jointsByLane, double* 
 }
 
 void BatchedForwardKinematics::addWithAncestors(LinkSet& set, int link) const {
-  for (int l = link; l >= 0; l = parentLink_[static_cast<std::size_t>(l)]) set[static_cast<std::size_t>(l) >> 6] |= std::uint64_t{1} << (l & 63);
+  for (int l = link; l >= 0; l = parentLink_[static_cast<std::size_t>(l)])
+    set[static_cast<std::size_t>(l) >> 6] |= std::uint64_t{1} << (l & 63);
 }
 
 void BatchedForwardKinematics::computeSome(const double* q, double* poses, const LinkSet& links, int frame) const {

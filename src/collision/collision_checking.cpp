@@ -1,7 +1,7 @@
 #include "pmdplan/collision/collision_checking.hpp"
 
-#include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast_segment_checker.hpp"
 
 namespace pmdplan {
 

@@ -136,7 +136,8 @@ void project(const ConvexPart& p, const double* n, double& centre, double& halfW
   }
   const double* m = p.axes;
   centre = p.a[0] * n[0] + p.a[1] * n[1] + p.a[2] * n[2];
-  const double u = std::abs(m[0] * n[0] + m[3] * n[1] + m[6] * n[2]), v = std::abs(m[1] * n[0] + m[4] * n[1] + m[7] * n[2]),
+  const double u = std::abs(m[0] * n[0] + m[3] * n[1] + m[6] * n[2]),
+               v = std::abs(m[1] * n[0] + m[4] * n[1] + m[7] * n[2]),
                w = std::abs(m[2] * n[0] + m[5] * n[1] + m[8] * n[2]);
   if (p.kind == ConvexPart::Kind::Box)
     halfWidth = p.half[0] * u + p.half[1] * v + p.half[2] * w;
@@ -208,11 +209,10 @@ double segmentDistance(const double* p0, const double* p1, const double* q0, con
 #define PMDPLAN_AVX2_CLONES [[gnu::target_clones("avx2", "default")]]
 #endif
 
-
 // lanes::segmentDistance over plain arrays, four lanes at a time (built for AVX2 and the SSE2
 // baseline; the loader picks one for the running CPU).
 PMDPLAN_AVX2_CLONES void segmentDistances(const double* p0, const double* p1, const double* q0, const double* q1,
-                                                                double* distances) {
+                                          double* distances) {
   using V = lanes::Vec<4>;
   constexpr int L = kSegmentLanes;
   for (int first = 0; first < L; first += 4) {
@@ -234,7 +234,8 @@ double sphereGap(const ConvexPart& part, const double* c, double r) {
                  ow = std::max(std::abs(w) - part.half[2], 0.0);
     outside2 = ou * ou + ov * ov + ow * ow;
   } else {
-    const double radial = std::max(std::sqrt(u * u + v * v) - part.half[0], 0.0), axial = std::max(std::abs(w) - part.half[1], 0.0);
+    const double radial = std::max(std::sqrt(u * u + v * v) - part.half[0], 0.0),
+                 axial = std::max(std::abs(w) - part.half[1], 0.0);
     outside2 = radial * radial + axial * axial;
   }
   return std::sqrt(outside2) - r;
@@ -245,8 +246,8 @@ namespace {
 // One kernel per kind, without branches on the data, so the loop vectorises (this file is built
 // with -fno-math-errno -fno-trapping-math, see CMakeLists.txt).
 template <ConvexPart::Kind K>
-[[gnu::always_inline]] inline void gapsOf(const ConvexPart& p, const double* x, const double* y, const double* z, const double* r,
-                                          int count, double* gaps) {
+[[gnu::always_inline]] inline void gapsOf(const ConvexPart& p, const double* x, const double* y, const double* z,
+                                          const double* r, int count, double* gaps) {
   const double cx = p.a[0], cy = p.a[1], cz = p.a[2];
   const double* m = p.axes;
   const double m0 = m[0], m1 = m[1], m2 = m[2], m3 = m[3], m4 = m[4], m5 = m[5], m6 = m[6], m7 = m[7], m8 = m[8];
@@ -263,7 +264,8 @@ template <ConvexPart::Kind K>
     } else {
       const double u = m0 * dx + m3 * dy + m6 * dz, v = m1 * dx + m4 * dy + m7 * dz, w = m2 * dx + m5 * dy + m8 * dz;
       if constexpr (K == ConvexPart::Kind::Box) {
-        const double ou = std::max(std::abs(u) - h0, 0.0), ov = std::max(std::abs(v) - h1, 0.0), ow = std::max(std::abs(w) - h2, 0.0);
+        const double ou = std::max(std::abs(u) - h0, 0.0), ov = std::max(std::abs(v) - h1, 0.0),
+                     ow = std::max(std::abs(w) - h2, 0.0);
         outside = std::sqrt(ou * ou + ov * ov + ow * ow);
       } else {
         const double radial = std::max(std::sqrt(u * u + v * v) - h0, 0.0), axial = std::max(std::abs(w) - h1, 0.0);
@@ -278,19 +280,24 @@ template <ConvexPart::Kind K>
 
 // Built for AVX2 and the SSE2 baseline; the loader picks one for the running CPU.
 PMDPLAN_AVX2_CLONES void sphereGaps(const ConvexPart& part, const double* x, const double* y, const double* z,
-                                                          const double* r, int count, double* gaps) {
+                                    const double* r, int count, double* gaps) {
   switch (part.kind) {
-    case ConvexPart::Kind::Capsule: return gapsOf<ConvexPart::Kind::Capsule>(part, x, y, z, r, count, gaps);
-    case ConvexPart::Kind::Box: return gapsOf<ConvexPart::Kind::Box>(part, x, y, z, r, count, gaps);
-    case ConvexPart::Kind::Cylinder: return gapsOf<ConvexPart::Kind::Cylinder>(part, x, y, z, r, count, gaps);
+    case ConvexPart::Kind::Capsule:
+      return gapsOf<ConvexPart::Kind::Capsule>(part, x, y, z, r, count, gaps);
+    case ConvexPart::Kind::Box:
+      return gapsOf<ConvexPart::Kind::Box>(part, x, y, z, r, count, gaps);
+    case ConvexPart::Kind::Cylinder:
+      return gapsOf<ConvexPart::Kind::Cylinder>(part, x, y, z, r, count, gaps);
   }
 }
 
-CoreDistance coreDistance(const ConvexPart& a, const ConvexPart& b, double radii, double band, double relativePrecision) {
+CoreDistance coreDistance(const ConvexPart& a, const ConvexPart& b, double radii, double band,
+                          double relativePrecision) {
   constexpr int kMaxIterations = 48;
   constexpr double kAbsolutePrecision = 1e-9;  // m
   Simplex simplex;
-  const Vec towards = Vec{b.boundCentre[0], b.boundCentre[1], b.boundCentre[2]} - Vec{a.boundCentre[0], a.boundCentre[1], a.boundCentre[2]};
+  const Vec towards = Vec{b.boundCentre[0], b.boundCentre[1], b.boundCentre[2]} -
+                      Vec{a.boundCentre[0], a.boundCentre[1], a.boundCentre[2]};
   Vec v = differenceSupport(a, b, towards);
   simplex.p[0] = v, simplex.size = 1;
   CoreDistance result;
@@ -311,8 +318,12 @@ CoreDistance coreDistance(const ConvexPart& a, const ConvexPart& b, double radii
     }
     simplex.p[simplex.size++] = w;
     switch (simplex.size) {
-      case 2: v = closestOnSegment(simplex); break;
-      case 3: v = closestOnTriangle(simplex); break;
+      case 2:
+        v = closestOnSegment(simplex);
+        break;
+      case 3:
+        v = closestOnTriangle(simplex);
+        break;
       default:
         if (!closestOnTetrahedron(simplex, v)) {
           result.intersecting = true;

@@ -7,7 +7,8 @@ namespace pmdplan {
 namespace {
 
 void transformPoint(const double* pose, const double* p, double* out) {
-  for (int r = 0; r < 3; ++r) out[r] = pose[r * 3] * p[0] + pose[r * 3 + 1] * p[1] + pose[r * 3 + 2] * p[2] + pose[9 + r];
+  for (int r = 0; r < 3; ++r)
+    out[r] = pose[r * 3] * p[0] + pose[r * 3 + 1] * p[1] + pose[r * 3 + 2] * p[2] + pose[9 + r];
 }
 
 void setCentredBound(ConvexPart& part, const double* centre, double radius) {
@@ -48,11 +49,14 @@ ConvexPart boxPart(const double* pose, const double* halfExtents) {
   part.kind = ConvexPart::Kind::Box;
   for (int i = 0; i < 9; ++i) part.axes[i] = pose[i];
   for (int i = 0; i < 3; ++i) part.a[i] = pose[9 + i], part.half[i] = halfExtents[i];
-  setCentredBound(part, part.a, std::sqrt(halfExtents[0] * halfExtents[0] + halfExtents[1] * halfExtents[1] + halfExtents[2] * halfExtents[2]));
+  setCentredBound(
+      part, part.a,
+      std::sqrt(halfExtents[0] * halfExtents[0] + halfExtents[1] * halfExtents[1] + halfExtents[2] * halfExtents[2]));
   // Along the longest axis k every point is within the other two half extents of the axis.
-  const int k = halfExtents[0] >= halfExtents[1] ? (halfExtents[0] >= halfExtents[2] ? 0 : 2) : (halfExtents[1] >= halfExtents[2] ? 1 : 2);
-  const double across2 = halfExtents[0] * halfExtents[0] + halfExtents[1] * halfExtents[1] + halfExtents[2] * halfExtents[2] -
-                         halfExtents[k] * halfExtents[k];
+  const int k = halfExtents[0] >= halfExtents[1] ? (halfExtents[0] >= halfExtents[2] ? 0 : 2)
+                                                 : (halfExtents[1] >= halfExtents[2] ? 1 : 2);
+  const double across2 = halfExtents[0] * halfExtents[0] + halfExtents[1] * halfExtents[1] +
+                         halfExtents[2] * halfExtents[2] - halfExtents[k] * halfExtents[k];
   setOuterCapsule(part, k, halfExtents[k], std::sqrt(across2));
   return part;
 }
@@ -85,12 +89,14 @@ void placePart(const ConvexPart& local, const double* pose, ConvexPart& world) {
   }
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c)
-      world.axes[r * 3 + c] = pose[r * 3] * local.axes[c] + pose[r * 3 + 1] * local.axes[3 + c] + pose[r * 3 + 2] * local.axes[6 + c];
+      world.axes[r * 3 + c] =
+          pose[r * 3] * local.axes[c] + pose[r * 3 + 1] * local.axes[3 + c] + pose[r * 3 + 2] * local.axes[6 + c];
 }
 
 void coreSupport(const ConvexPart& part, const double* d, double* point) {
   if (part.kind == ConvexPart::Kind::Capsule) {
-    const double along = d[0] * (part.b[0] - part.a[0]) + d[1] * (part.b[1] - part.a[1]) + d[2] * (part.b[2] - part.a[2]);
+    const double along =
+        d[0] * (part.b[0] - part.a[0]) + d[1] * (part.b[1] - part.a[1]) + d[2] * (part.b[2] - part.a[2]);
     const double* end = along > 0.0 ? part.b : part.a;
     for (int i = 0; i < 3; ++i) point[i] = end[i];
     return;
@@ -111,7 +117,8 @@ void coreSupport(const ConvexPart& part, const double* d, double* point) {
     local[0] = u * scale, local[1] = v * scale;
     local[2] = w >= 0.0 ? part.half[1] : -part.half[1];
   }
-  for (int r = 0; r < 3; ++r) point[r] = part.a[r] + m[r * 3] * local[0] + m[r * 3 + 1] * local[1] + m[r * 3 + 2] * local[2];
+  for (int r = 0; r < 3; ++r)
+    point[r] = part.a[r] + m[r * 3] * local[0] + m[r * 3 + 1] * local[1] + m[r * 3 + 2] * local[2];
 }
 
 bool shrinkPart(const ConvexPart& part, double amount, ConvexPart& shrunk) {

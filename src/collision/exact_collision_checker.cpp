@@ -13,8 +13,8 @@ namespace pmdplan {
 
 struct PlacedGeometry {
   std::shared_ptr<fcl::CollisionGeometryd> geometry;
-  Eigen::Isometry3d pose;  ///< in the link frame (robot) or the world (obstacles)
-  double radius = 0.0;     ///< encloses the geometry around pose.translation()
+  Eigen::Isometry3d pose;         ///< in the link frame (robot) or the world (obstacles)
+  double radius = 0.0;            ///< encloses the geometry around pose.translation()
   bool againstBoxesOnly = false;  ///< a URDF capsule's second form (see the constructor)
   /// A point of the geometry (in its frame): a primitive's centre, a mesh's first vertex.
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
@@ -36,7 +36,7 @@ struct LinkSphere {
 struct ExactCollisionChecker::Geometry {
   std::vector<std::vector<PlacedGeometry>> links;  ///< per link
   std::vector<LinkSphere> linkSpheres;
-  std::vector<std::pair<int, int>> selfPairs;      ///< enabled link pairs that both have geometry
+  std::vector<std::pair<int, int>> selfPairs;  ///< enabled link pairs that both have geometry
   std::vector<PlacedObstacle> obstacles;
   fcl::CollisionRequestd request;
   fcl::DistanceRequestd distanceRequest;
@@ -55,7 +55,8 @@ bool sphereOutsideBox(const Eigen::Vector3d& centre, double radius, const Placed
 
 bool shapesCollide(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, const PlacedGeometry& b,
                    const Eigen::Isometry3d& poseB, const fcl::CollisionRequestd& request) {
-  if ((a.againstBoxesOnly && b.geometry->getNodeType() != fcl::GEOM_BOX) || (b.againstBoxesOnly && a.geometry->getNodeType() != fcl::GEOM_BOX))
+  if ((a.againstBoxesOnly && b.geometry->getNodeType() != fcl::GEOM_BOX) ||
+      (b.againstBoxesOnly && a.geometry->getNodeType() != fcl::GEOM_BOX))
     return false;
   if (spheresApart(poseA.translation(), a.radius, poseB.translation(), b.radius)) return false;
   fcl::CollisionResultd result;
@@ -71,7 +72,8 @@ PlacedGeometry placedGeometry(const Shape& shape, const Eigen::Isometry3d& pose)
   PlacedGeometry placed{makeFclGeometry(shape), pose};
   placed.radius = enclosingRadius(shape, *placed.geometry);
   if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
-    auto triangles = mesh->triangles ? mesh->triangles : std::make_shared<const TriangleMesh>(readMeshFile(mesh->file, mesh->scale));
+    auto triangles =
+        mesh->triangles ? mesh->triangles : std::make_shared<const TriangleMesh>(readMeshFile(mesh->file, mesh->scale));
     placed.point = triangles->vertices[triangles->triangles.front()[0]];
     placed.interior = std::make_shared<const MeshInterior>(std::move(triangles));
   }
@@ -150,7 +152,8 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
     placed.boxMin = Eigen::Vector3d::Constant(1e300);
     placed.boxMax = -placed.boxMin;
     for (int corner = 0; corner < 8; ++corner) {
-      const Eigen::Vector3d local((corner & 1) ? box.max_.x() : box.min_.x(), (corner & 2) ? box.max_.y() : box.min_.y(),
+      const Eigen::Vector3d local((corner & 1) ? box.max_.x() : box.min_.x(),
+                                  (corner & 2) ? box.max_.y() : box.min_.y(),
                                   (corner & 4) ? box.max_.z() : box.min_.z());
       const Eigen::Vector3d world = obstacle.pose * local;
       placed.boxMin = placed.boxMin.cwiseMin(world);
@@ -215,7 +218,8 @@ bool ExactCollisionChecker::selfCollides(const LinkPoses& poses, bool armOnly, C
     if (!linkPairCollides(poses, a, b)) continue;
     collides = true;
     if (!report) return true;
-    report->pairs.emplace_back(model_.links()[static_cast<std::size_t>(a)].name, model_.links()[static_cast<std::size_t>(b)].name);
+    report->pairs.emplace_back(model_.links()[static_cast<std::size_t>(a)].name,
+                               model_.links()[static_cast<std::size_t>(b)].name);
   }
   return collides;
 }
@@ -267,15 +271,16 @@ double ExactCollisionChecker::distanceToObstacle(const Configuration& q, const s
     if (l < 0 || static_cast<std::size_t>(l) >= g.links.size()) throw std::invalid_argument("link index out of range");
     for (const auto& shape : g.links[static_cast<std::size_t>(l)]) {
       fcl::DistanceResultd result;
-      fcl::distance(shape.geometry.get(), poses_[static_cast<std::size_t>(l)] * shape.pose, g.obstacles[o].geometry.get(),
-                    g.obstacles[o].pose, g.distanceRequest, result);
+      fcl::distance(shape.geometry.get(), poses_[static_cast<std::size_t>(l)] * shape.pose,
+                    g.obstacles[o].geometry.get(), g.obstacles[o].pose, g.distanceRequest, result);
       best = std::min(best, result.min_distance);
     }
   }
   return best;
 }
 
-std::optional<Clearance> ExactCollisionChecker::clearance(const Configuration& q, const std::optional<std::string>& obstacleName) {
+std::optional<Clearance> ExactCollisionChecker::clearance(const Configuration& q,
+                                                          const std::optional<std::string>& obstacleName) {
   const auto& g = *geometry_;
   kinematics_.linkPoses(q, poses_);
   std::optional<Clearance> best;

@@ -47,7 +47,8 @@ template <class V>
 template <class V>
 [[gnu::always_inline]] inline V transformedRow(const double* m, const double* p, int r) {
   using lanes::load;
-  return load<V>(m + (r * 3) * L) * p[0] + load<V>(m + (r * 3 + 1) * L) * p[1] + load<V>(m + (r * 3 + 2) * L) * p[2] + load<V>(m + (9 + r) * L);
+  return load<V>(m + (r * 3) * L) * p[0] + load<V>(m + (r * 3 + 1) * L) * p[1] + load<V>(m + (r * 3 + 2) * L) * p[2] +
+         load<V>(m + (9 + r) * L);
 }
 template <class V>
 [[gnu::always_inline]] inline Point<V> transformed(const double* m, const double* p) {
@@ -63,7 +64,8 @@ template <class V>
 
 /// Centre and half width of a placed part's projection on the unit direction n.
 template <class V>
-[[gnu::always_inline]] inline void project(const ConvexPart& shape, const double* part, const Point<V>& n, V& centre, V& halfWidth) {
+[[gnu::always_inline]] inline void project(const ConvexPart& shape, const double* part, const Point<V>& n, V& centre,
+                                           V& halfWidth) {
   using lanes::abs;
   using lanes::dot;
   const Point<V> a = pointAt<V>(part);
@@ -87,10 +89,11 @@ template <class V>
 /// its own axes a part's half width is its half extent. Unless `tight`, the second part's axes are
 /// tried only if the first part's leave some lane unproven (a looser bound, proof enough).
 template <class V>
-[[gnu::always_inline]] inline V faceSeparation(const ConvexPart& shapeA, const double* a, const ConvexPart& shapeB, const double* b, double band,
-                                               bool tight) {
+[[gnu::always_inline]] inline V faceSeparation(const ConvexPart& shapeA, const double* a, const ConvexPart& shapeB,
+                                               const double* b, double band, bool tight) {
   V best = lanes::splat<V>(-kInfinity);
-  const auto alongAxesOf = [&](const ConvexPart& own, const double* ownLanes, const ConvexPart& other, const double* otherLanes) {
+  const auto alongAxesOf = [&](const ConvexPart& own, const double* ownLanes, const ConvexPart& other,
+                               const double* otherLanes) {
     if (own.kind == ConvexPart::Kind::Capsule) return;
     const V ownCentre[3] = {pointAt<V>(ownLanes).x, pointAt<V>(ownLanes).y, pointAt<V>(ownLanes).z};
     for (int k = own.kind == ConvexPart::Kind::Box ? 0 : 2; k < 3; ++k) {
@@ -98,7 +101,8 @@ template <class V>
       V centre, halfWidth;
       project(other, otherLanes, n, centre, halfWidth);
       const V ownHalf = lanes::splat<V>(own.kind == ConvexPart::Kind::Box ? own.half[k] : own.half[1]);
-      best = lanes::max(best, lanes::abs(n.x * ownCentre[0] + n.y * ownCentre[1] + n.z * ownCentre[2] - centre) - ownHalf - halfWidth);
+      best = lanes::max(best, lanes::abs(n.x * ownCentre[0] + n.y * ownCentre[1] + n.z * ownCentre[2] - centre) -
+                                  ownHalf - halfWidth);
     }
   };
   alongAxesOf(shapeA, a, shapeB, b);
@@ -111,15 +115,16 @@ template <class V>
 /// and where those leave a lane unproven and a part is a cylinder, the other part's core (a
 /// capsule's) or outer capsule against that cylinder.
 template <class V>
-[[gnu::always_inline]] inline V solidGap(const ConvexPart& shapeA, const double* a, const ConvexPart& shapeB, const double* b, double band,
-                                         bool tight) {
+[[gnu::always_inline]] inline V solidGap(const ConvexPart& shapeA, const double* a, const ConvexPart& shapeB,
+                                         const double* b, double band, bool tight) {
   V best = faceSeparation<V>(shapeA, a, shapeB, b, band, tight);
-  const auto againstCylinder = [&](const ConvexPart& other, const double* otherLanes, const ConvexPart& cylinder, const double* cylinderLanes) {
+  const auto againstCylinder = [&](const ConvexPart& other, const double* otherLanes, const ConvexPart& cylinder,
+                                   const double* cylinderLanes) {
     if (cylinder.kind != ConvexPart::Kind::Cylinder || (!tight && !lanes::any(best <= band))) return;
     const bool capsule = other.kind == ConvexPart::Kind::Capsule;
     const double* ends = capsule ? otherLanes : otherLanes + kPartOuter * L;
-    const V g = lanes::segmentCylinderDistance(pointAt<V>(ends), pointAt<V>(ends + 3 * L), pointAt<V>(cylinderLanes), axisOf<V>(cylinderLanes, 2),
-                                               cylinder.half[0], cylinder.half[1]) -
+    const V g = lanes::segmentCylinderDistance(pointAt<V>(ends), pointAt<V>(ends + 3 * L), pointAt<V>(cylinderLanes),
+                                               axisOf<V>(cylinderLanes, 2), cylinder.half[0], cylinder.half[1]) -
                 (capsule ? other.radius : other.outerRadius);
     best = lanes::max(best, g);
   };
@@ -143,10 +148,12 @@ template <class V>
     return lanes::sqrtBelow(lanes::dot(q, q)) - (part.radius + r);
   }
   const double* m = part.axes;  // local coordinates: the rotation transposed
-  const V u = m[0] * d.x + m[3] * d.y + m[6] * d.z, v = m[1] * d.x + m[4] * d.y + m[7] * d.z, w = m[2] * d.x + m[5] * d.y + m[8] * d.z;
+  const V u = m[0] * d.x + m[3] * d.y + m[6] * d.z, v = m[1] * d.x + m[4] * d.y + m[7] * d.z,
+          w = m[2] * d.x + m[5] * d.y + m[8] * d.z;
   const V zero = lanes::splat<V>(0.0);
   if (part.kind == ConvexPart::Kind::Box) {
-    const V ou = max(abs(u) - part.half[0], zero), ov = max(abs(v) - part.half[1], zero), ow = max(abs(w) - part.half[2], zero);
+    const V ou = max(abs(u) - part.half[0], zero), ov = max(abs(v) - part.half[1], zero),
+            ow = max(abs(w) - part.half[2], zero);
     return lanes::sqrtBelow(ou * ou + ov * ov + ow * ow) - r;
   }
   const V radial = max(lanes::sqrt(u * u + v * v) - part.half[0], zero), axial = max(abs(w) - part.half[1], zero);
@@ -183,8 +190,8 @@ void FastCollisionChecker::prepareLanes() {
   for (const auto& obstacle : obstacles_) partShapes_.push_back(obstacle.part);
   const auto add = [&](std::uint32_t a, std::uint32_t b) {
     const ConvexPart &pa = partShapes_[a], &pb = partShapes_[b];
-    partPairs_.push_back({a, b, pa.kind == ConvexPart::Kind::Capsule && pb.kind == ConvexPart::Kind::Capsule, lanes::inverseSquaredLength(pa.a, pa.b),
-                          lanes::inverseSquaredLength(pb.a, pb.b)});
+    partPairs_.push_back({a, b, pa.kind == ConvexPart::Kind::Capsule && pb.kind == ConvexPart::Kind::Capsule,
+                          lanes::inverseSquaredLength(pa.a, pa.b), lanes::inverseSquaredLength(pb.a, pb.b)});
   };
   const auto partsOf = [&](int link) {
     const auto first = static_cast<std::uint32_t>(partOffset_[static_cast<std::size_t>(link)]);
@@ -218,7 +225,8 @@ void FastCollisionChecker::prepareLanes() {
 // smallest gap * share in laneSafe_, and in laneScalar_ the pairs each lane must test alone. Lanes
 // from `count` on repeat the last configuration: they are computed, never reported.
 template <class V>
-[[gnu::always_inline]] inline void FastCollisionChecker::screenLanesOf(const double* poses, int count, int first, bool tight) {
+[[gnu::always_inline]] inline void FastCollisionChecker::screenLanesOf(const double* poses, int count, int first,
+                                                                       bool tight) {
   using lanes::load;
   using lanes::store;
   constexpr int W = lanes::widthOf<V>;
@@ -228,8 +236,12 @@ template <class V>
   poses += first;
   double* gaps = pairLaneGaps_.data() + first;
   double* partGaps = partPairGaps_.data() + first;
-  const auto part = [&](std::uint32_t index) { return partLanes_.data() + static_cast<std::size_t>(index) * kPartValues * L + first; };
-  const auto bound = [&](int link) { return pointAt<V>(boundLanes_.data() + static_cast<std::size_t>(link) * 3 * L + first); };
+  const auto part = [&](std::uint32_t index) {
+    return partLanes_.data() + static_cast<std::size_t>(index) * kPartValues * L + first;
+  };
+  const auto bound = [&](int link) {
+    return pointAt<V>(boundLanes_.data() + static_cast<std::size_t>(link) * 3 * L + first);
+  };
   const auto place = [&](int link) {
     const auto l = static_cast<std::size_t>(link);
     if (partLanesPlaced_[l]) return;
@@ -249,7 +261,8 @@ template <class V>
       storePoint(out + (kPartOuter + 3) * L, transformed<V>(m, shape.outerB));
       for (int r = 0; r < 3; ++r)  // world axes: the link's rotation times the part's
         for (int c = 0; c < 3; ++c)
-          store(out + (kPartAxes + r * 3 + c) * L, load<V>(m + (r * 3) * L) * shape.axes[c] + load<V>(m + (r * 3 + 1) * L) * shape.axes[3 + c] +
+          store(out + (kPartAxes + r * 3 + c) * L, load<V>(m + (r * 3) * L) * shape.axes[c] +
+                                                       load<V>(m + (r * 3 + 1) * L) * shape.axes[3 + c] +
                                                        load<V>(m + (r * 3 + 2) * L) * shape.axes[6 + c]);
     }
   };
@@ -258,7 +271,8 @@ template <class V>
   std::fill(partLanesPlaced_.begin(), partLanesPlaced_.end(), 0);
   for (int l : boundLinks_)
     storePoint(boundLanes_.data() + static_cast<std::size_t>(l) * 3 * L + first,
-               transformed<V>(poses + static_cast<std::size_t>(l) * kValues * L, links_[static_cast<std::size_t>(l)].boundCentre));
+               transformed<V>(poses + static_cast<std::size_t>(l) * kValues * L,
+                              links_[static_cast<std::size_t>(l)].boundCentre));
   for (std::size_t p = 0; p < selfCount; ++p) {
     const Point<V> d = bound(pairA_[p]) - bound(pairB_[p]);
     const V gap = lanes::sqrtBelow(lanes::dot(d, d)) - pairRadiusSum_[p];
@@ -314,7 +328,8 @@ template <class V>
     for (std::uint32_t k = pairPartsBegin_[pair]; k < pairPartsBegin_[pair + 1]; ++k) {
       const PartPair& pp = partPairs_[k];
       const Point<V> d = pointAt<V>(part(pp.indexA) + kPartBound * L) - pointAt<V>(part(pp.indexB) + kPartBound * L);
-      const V spheres = lanes::sqrtBelow(lanes::dot(d, d)) - (partShapes_[pp.indexA].boundRadius + partShapes_[pp.indexB].boundRadius);
+      const V spheres = lanes::sqrtBelow(lanes::dot(d, d)) -
+                        (partShapes_[pp.indexA].boundRadius + partShapes_[pp.indexB].boundRadius);
       store(partGaps + static_cast<std::size_t>(k) * L, spheres);
       const bool meet = tight || lanes::lowest(spheres) <= band_;  // tight: every part pair measured
       (pp.capsules ? capsuleWork_[capsules] : faceWork_[faces]) = k;
@@ -326,14 +341,16 @@ template <class V>
     const PartPair& pp = partPairs_[k];
     const double *a = part(pp.indexA), *b = part(pp.indexB);
     store(partGaps + static_cast<std::size_t>(k) * L,
-          lanes::segmentDistance(pointAt<V>(a), pointAt<V>(a + 3 * L), pointAt<V>(b), pointAt<V>(b + 3 * L), pp.inverseA, pp.inverseB) -
+          lanes::segmentDistance(pointAt<V>(a), pointAt<V>(a + 3 * L), pointAt<V>(b), pointAt<V>(b + 3 * L),
+                                 pp.inverseA, pp.inverseB) -
               (partShapes_[pp.indexA].radius + partShapes_[pp.indexB].radius));
   }
   for (std::size_t w = 0; w < faces; ++w) {
     const std::uint32_t k = faceWork_[w];
     const PartPair& pp = partPairs_[k];
     double* g = partGaps + static_cast<std::size_t>(k) * L;
-    store(g, lanes::max(load<V>(g), solidGap<V>(partShapes_[pp.indexA], part(pp.indexA), partShapes_[pp.indexB], part(pp.indexB), band_, tight)));
+    store(g, lanes::max(load<V>(g), solidGap<V>(partShapes_[pp.indexA], part(pp.indexA), partShapes_[pp.indexB],
+                                                part(pp.indexB), band_, tight)));
   }
   for (std::size_t pair = 0; pair < pairs; ++pair) {
     if (!pairNear_[pair]) continue;
@@ -351,14 +368,17 @@ template <class V>
   V safe = lanes::splat<V>(kInfinity);
   for (std::size_t p = 0; p < selfCount; ++p) safe = lanes::min(safe, load<V>(gaps + p * L) * pairShare_[p]);
   for (std::size_t o = 0; o < obstacles_.size(); ++o)
-    for (std::size_t i = 0; i < linkCount; ++i) safe = lanes::min(safe, load<V>(gaps + (selfCount + o * linkCount + i) * L) * linkShare_[i]);
+    for (std::size_t i = 0; i < linkCount; ++i)
+      safe = lanes::min(safe, load<V>(gaps + (selfCount + o * linkCount + i) * L) * linkShare_[i]);
   store(laneSafe_ + first, safe);
 }
 
-[[gnu::target("avx512f")]] void FastCollisionChecker::screenAvx512(FastCollisionChecker& c, const double* poses, int count, bool tight) {
+[[gnu::target("avx512f")]] void FastCollisionChecker::screenAvx512(FastCollisionChecker& c, const double* poses,
+                                                                   int count, bool tight) {
   c.screenLanesOf<lanes::Vec<8>>(poses, count, 0, tight);
 }
-[[gnu::target("avx2")]] void FastCollisionChecker::screenAvx2(FastCollisionChecker& c, const double* poses, int count, bool tight) {
+[[gnu::target("avx2")]] void FastCollisionChecker::screenAvx2(FastCollisionChecker& c, const double* poses, int count,
+                                                              bool tight) {
   for (int first = 0; first < count; first += 4) c.screenLanesOf<lanes::Vec<4>>(poses, count, first, tight);
 }
 void FastCollisionChecker::screenSse2(FastCollisionChecker& c, const double* poses, int count, bool tight) {
@@ -372,7 +392,8 @@ int FastCollisionChecker::widestLaneWidth() {
 
 void FastCollisionChecker::setLaneWidth(int width) {
   if (!(width == 2 || width == 4 || width == 8) || width > widestLaneWidth())
-    throw std::invalid_argument("lane width " + std::to_string(width) + ": this CPU runs 2 to " + std::to_string(widestLaneWidth()));
+    throw std::invalid_argument("lane width " + std::to_string(width) + ": this CPU runs 2 to " +
+                                std::to_string(widestLaneWidth()));
   laneWidth_ = width;
 }
 
@@ -385,8 +406,8 @@ void FastCollisionChecker::screenLanes(const double* poses, int count, bool tigh
     screenSse2(*this, poses, count, tight);
 }
 
-void FastCollisionChecker::screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
-                                       double* safe, double* pairGaps) {
+void FastCollisionChecker::screenBatch(const Configuration* const* configurations, int count, const double* poses,
+                                       bool* valid, double* safe, double* pairGaps) {
   const std::size_t selfCount = selfPairs_.size(), linkCount = geometricLinks_.size(), pairs = pairCount();
   if (!(staticSelfCollisions_.empty() && staticEnvironmentCollisions_.empty())) {
     for (int lane = 0; lane < count; ++lane) valid[lane] = false, safe[lane] = 0.0, ++statistics_.provenColliding;
@@ -427,7 +448,8 @@ void FastCollisionChecker::screenBatch(const Configuration* const* configuration
     }
     if (pairGaps)
       for (std::size_t pair = 0; pair < pairs; ++pair)
-        pairGaps[static_cast<std::size_t>(lane) * pairs + pair] = pairLaneGaps_[pair * L + static_cast<std::size_t>(lane)];
+        pairGaps[static_cast<std::size_t>(lane) * pairs + pair] =
+            pairLaneGaps_[pair * L + static_cast<std::size_t>(lane)];
     if (uncertain_.empty()) {
       ++statistics_.provenFree;
       valid[lane] = true;

@@ -111,7 +111,8 @@ FastCollisionChecker::FastCollisionChecker(const Task& task, ExactCollisionCheck
   for (std::size_t l = 0; l < n; ++l)
     if (!moving_[l] && !links_[l].empty())
       for (std::size_t o = 0; o < obstacles_.size(); ++o)
-        if (exact.linkObstacleCollides(exactPoses_, static_cast<int>(l), o)) staticEnvironmentCollisions_.emplace_back(static_cast<int>(l), o);
+        if (exact.linkObstacleCollides(exactPoses_, static_cast<int>(l), o))
+          staticEnvironmentCollisions_.emplace_back(static_cast<int>(l), o);
 }
 
 // The moving links with geometry in depth-first order, so that every link's geometric
@@ -149,7 +150,8 @@ const ConvexPart* FastCollisionChecker::placedBounds(int link) {
   for (std::size_t p = 0; p < local.size(); ++p) {
     const double* c = local[p].boundCentre;
     double* w = world[p].boundCentre;
-    for (int r = 0; r < 3; ++r) w[r] = pose[r * 3] * c[0] + pose[r * 3 + 1] * c[1] + pose[r * 3 + 2] * c[2] + pose[9 + r];
+    for (int r = 0; r < 3; ++r)
+      w[r] = pose[r * 3] * c[0] + pose[r * 3 + 1] * c[1] + pose[r * 3 + 2] * c[2] + pose[9 + r];
     world[p].boundRadius = local[p].boundRadius;
     partPlaced_[static_cast<std::size_t>(partOffset_[l]) + p] = 0;
   }
@@ -173,8 +175,10 @@ const ConvexPart& FastCollisionChecker::placedPart(int link, std::size_t index) 
 FastCollisionChecker::Outcome FastCollisionChecker::linkPairContact(int a, int b, double& gap) {
   const ConvexPart* partsA = placedBounds(a);
   const ConvexPart* partsB = placedBounds(b);
-  const std::size_t na = links_[static_cast<std::size_t>(a)].parts.size(), nb = links_[static_cast<std::size_t>(b)].parts.size();
-  const double boundB[3] = {boundX_[static_cast<std::size_t>(b)], boundY_[static_cast<std::size_t>(b)], boundZ_[static_cast<std::size_t>(b)]};
+  const std::size_t na = links_[static_cast<std::size_t>(a)].parts.size(),
+                    nb = links_[static_cast<std::size_t>(b)].parts.size();
+  const double boundB[3] = {boundX_[static_cast<std::size_t>(b)], boundY_[static_cast<std::size_t>(b)],
+                            boundZ_[static_cast<std::size_t>(b)]};
   const double boundRadiusB = links_[static_cast<std::size_t>(b)].boundRadius;
   bool uncertain = false, enclosures = false;
   gap = kInfinity;
@@ -260,7 +264,8 @@ void FastCollisionChecker::placeBound(int link) {
 // safe displacement (see ScreenResult) when every pair was proven apart, 0 when some were
 // flagged, -1 when stopped. With pairGaps, every pair's gap is written there (0 when flagged).
 template <class OnFlag>
-double FastCollisionChecker::screenLane(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag, double* pairGaps) {
+double FastCollisionChecker::screenLane(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag,
+                                        double* pairGaps) {
   beginLane(poses, stride, lane);
   for (int l : boundLinks_) placeBound(l);
   double safe = kInfinity;
@@ -280,7 +285,8 @@ double FastCollisionChecker::screenLane(const double* poses, int stride, int lan
       dx[p] = bx[pa[p]] - bx[pb[p]], dy[p] = by[pa[p]] - by[pb[p]], dz[p] = bz[pa[p]] - bz[pb[p]];
     const double* sum = pairRadiusSum_.data();
     double* __restrict gaps = pairGaps_.data();
-    for (std::size_t p = 0; p < selfCount; ++p) gaps[p] = std::sqrt(dx[p] * dx[p] + dy[p] * dy[p] + dz[p] * dz[p]) - sum[p];
+    for (std::size_t p = 0; p < selfCount; ++p)
+      gaps[p] = std::sqrt(dx[p] * dx[p] + dy[p] * dy[p] + dz[p] * dz[p]) - sum[p];
   }
   for (std::size_t p = 0; p < selfCount; ++p) {
     if (armOnly && !pairIsArm_[p]) continue;
@@ -347,7 +353,8 @@ void FastCollisionChecker::computeMotionWeights(const RobotModel& model) {
     const auto chain = jointChain(model, link);
     for (std::size_t k = 0; k < chain.size(); ++k) {
       const Joint& joint = model.joints()[static_cast<std::size_t>(chain[k])];
-      if (joint.type == JointType::Fixed || std::find(exclude.begin(), exclude.end(), chain[k]) != exclude.end()) continue;
+      if (joint.type == JointType::Fixed || std::find(exclude.begin(), exclude.end(), chain[k]) != exclude.end())
+        continue;
       double reach = shapeReach;
       for (std::size_t below = k + 1; below < chain.size(); ++below)
         reach += model.joints()[static_cast<std::size_t>(chain[below])].origin.translation().norm();
@@ -370,7 +377,8 @@ void FastCollisionChecker::computeMotionWeights(const RobotModel& model) {
   for (const auto& [a, b] : selfPairs_) {
     const auto chainA = jointChain(model, a), chainB = jointChain(model, b);
     std::vector<int> common;
-    for (std::size_t k = 0; k < chainA.size() && k < chainB.size() && chainA[k] == chainB[k]; ++k) common.push_back(chainA[k]);
+    for (std::size_t k = 0; k < chainA.size() && k < chainB.size() && chainA[k] == chainB[k]; ++k)
+      common.push_back(chainA[k]);
     const auto wa = weightsOf(a, common), wb = weightsOf(b, common);
     for (std::size_t i = 0; i < dof; ++i) pairWeights_.push_back(wa[i] + wb[i]);
   }
@@ -379,7 +387,8 @@ void FastCollisionChecker::computeMotionWeights(const RobotModel& model) {
 void FastCollisionChecker::setMotion(const Configuration& from, const Configuration& to) {
   const auto dof = static_cast<std::size_t>(kinematics_.dof());
   std::vector<double> delta(dof);
-  for (std::size_t i = 0; i < dof; ++i) delta[i] = std::abs(to[static_cast<Eigen::Index>(i)] - from[static_cast<Eigen::Index>(i)]);
+  for (std::size_t i = 0; i < dof; ++i)
+    delta[i] = std::abs(to[static_cast<Eigen::Index>(i)] - from[static_cast<Eigen::Index>(i)]);
   // Shares are 1 / (distance moved over the whole segment), rounded up by a relative 1e-9 so
   // rounding never makes a gap look safer than it is.
   const auto share = [&](const double* w) {
@@ -394,7 +403,8 @@ void FastCollisionChecker::setMotion(const Configuration& from, const Configurat
 bool FastCollisionChecker::decide(const Configuration& q, const double* poses, int stride, int lane, bool armOnly,
                                   double* safeDisplacement, double* pairGaps) {
   if (safeDisplacement) *safeDisplacement = 0.0;
-  if (armOnly ? !staticArmSelfCollisions_.empty() : !(staticSelfCollisions_.empty() && staticEnvironmentCollisions_.empty())) {
+  if (armOnly ? !staticArmSelfCollisions_.empty()
+              : !(staticSelfCollisions_.empty() && staticEnvironmentCollisions_.empty())) {
     ++statistics_.provenColliding;
     return false;
   }
@@ -422,12 +432,14 @@ bool FastCollisionChecker::decide(const Configuration& q, const double* poses, i
 
 bool FastCollisionChecker::confirmUncertain(const Configuration& q) {
   // Pairs whose mesh enclosures overlap deeply are the likeliest to collide: asked first.
-  std::stable_partition(uncertain_.begin(), uncertain_.end(), [](const Flag& f) { return f.outcome == Outcome::EnclosuresOverlap; });
+  std::stable_partition(uncertain_.begin(), uncertain_.end(),
+                        [](const Flag& f) { return f.outcome == Outcome::EnclosuresOverlap; });
   exact_.kinematics().linkPoses(q, exactPoses_);
   for (const Flag& flag : uncertain_) {
     ++statistics_.pairsConfirmed;
-    const bool collides = flag.self ? exact_.linkPairCollides(exactPoses_, flag.a, flag.b)
-                                    : exact_.linkObstacleCollides(exactPoses_, flag.a, static_cast<std::size_t>(flag.b));
+    const bool collides = flag.self
+                              ? exact_.linkPairCollides(exactPoses_, flag.a, flag.b)
+                              : exact_.linkObstacleCollides(exactPoses_, flag.a, static_cast<std::size_t>(flag.b));
     if (collides) {
       ++statistics_.confirmedColliding;
       return false;
@@ -451,8 +463,8 @@ bool FastCollisionChecker::isArmValid(const Configuration& q) {
   return decide(q, poseScratch_.data(), 1, 0, true, nullptr);
 }
 
-void FastCollisionChecker::checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safeDisplacement,
-                                      double* pairGaps) {
+void FastCollisionChecker::checkBatch(const Configuration* const* configurations, int count, bool* valid,
+                                      double* safeDisplacement, double* pairGaps) {
   if (count < 1 || count > kLanes) throw std::invalid_argument("checkBatch: 1 to kLanes configurations");
   const int dof = kinematics_.dof();
   if (count == 1) {  // a lone state: the single-lane kinematics is cheaper than a padded batch
@@ -504,15 +516,18 @@ double FastCollisionChecker::testPair(std::size_t pair) {
     std::tie(a, b) = selfPairs_[pair];
     for (const int l : {a, b})
       if (!boundPlaced_[static_cast<std::size_t>(l)]) placeBound(l);
-    const double c1[3] = {boundX_[static_cast<std::size_t>(a)], boundY_[static_cast<std::size_t>(a)], boundZ_[static_cast<std::size_t>(a)]};
-    const double c2[3] = {boundX_[static_cast<std::size_t>(b)], boundY_[static_cast<std::size_t>(b)], boundZ_[static_cast<std::size_t>(b)]};
+    const double c1[3] = {boundX_[static_cast<std::size_t>(a)], boundY_[static_cast<std::size_t>(a)],
+                          boundZ_[static_cast<std::size_t>(a)]};
+    const double c2[3] = {boundX_[static_cast<std::size_t>(b)], boundY_[static_cast<std::size_t>(b)],
+                          boundZ_[static_cast<std::size_t>(b)]};
     gap = sphereSphereGap(c1, 0.0, c2, 0.0) - pairRadiusSum_[pair];
   } else {
     const std::size_t k = pair - selfCount, linkCount = geometricLinks_.size();
     a = geometricLinks_[k % linkCount];
     b = static_cast<int>(k / linkCount);
     if (!boundPlaced_[static_cast<std::size_t>(a)]) placeBound(a);
-    const double c[3] = {boundX_[static_cast<std::size_t>(a)], boundY_[static_cast<std::size_t>(a)], boundZ_[static_cast<std::size_t>(a)]};
+    const double c[3] = {boundX_[static_cast<std::size_t>(a)], boundY_[static_cast<std::size_t>(a)],
+                         boundZ_[static_cast<std::size_t>(a)]};
     gap = sphereGap(obstacles_[static_cast<std::size_t>(b)].part, c, geometricBoundR_[k % linkCount]);
   }
   if (gap > band_) return gap;
@@ -521,7 +536,8 @@ double FastCollisionChecker::testPair(std::size_t pair) {
   if (outcome == Outcome::Overlapping) return -1.0;
   exact_.kinematics().linkPoses(posed_, exactPoses_);
   ++statistics_.pairsConfirmed;
-  const bool collides = self ? exact_.linkPairCollides(exactPoses_, a, b) : exact_.linkObstacleCollides(exactPoses_, a, static_cast<std::size_t>(b));
+  const bool collides = self ? exact_.linkPairCollides(exactPoses_, a, b)
+                             : exact_.linkObstacleCollides(exactPoses_, a, static_cast<std::size_t>(b));
   return collides ? -1.0 : 0.0;
 }
 
@@ -536,7 +552,8 @@ ScreenResult FastCollisionChecker::screen(const Configuration& q, bool armOnly) 
     if (flag.self)
       (overlapping ? result.overlappingSelf : result.uncertainSelf).emplace_back(flag.a, flag.b);
     else
-      (overlapping ? result.overlappingObstacle : result.uncertainObstacle).emplace_back(flag.a, static_cast<std::size_t>(flag.b));
+      (overlapping ? result.overlappingObstacle : result.uncertainObstacle)
+          .emplace_back(flag.a, static_cast<std::size_t>(flag.b));
     return false;
   });
   result.safeDisplacement = result.provenFree() ? std::max(safe, 0.0) : 0.0;

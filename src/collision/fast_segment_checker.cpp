@@ -42,7 +42,9 @@ bool FastSegmentChecker::isValid(const Configuration& from, const Configuration&
   states_.setMotion(from, to);
   const Configuration delta = to - from;
   // The very expression SegmentChecker uses, so the states are bit for bit the same.
-  const auto stateAt = [&](long i, Configuration& q) { q.noalias() = from + delta * (static_cast<double>(i) / static_cast<double>(n)); };
+  const auto stateAt = [&](long i, Configuration& q) {
+    q.noalias() = from + delta * (static_cast<double>(i) / static_cast<double>(n));
+  };
   const std::size_t pairs = states_.pairCount();
 
   // 1. The coarse states (state 1, where the sweep starts, then the first bisection states), a

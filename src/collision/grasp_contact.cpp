@@ -5,11 +5,15 @@
 namespace pmdplan {
 
 GraspContactRule::GraspContactRule(const Task& task) {
-  if (!task.target) throw InputError(task.file.string(), "target", "a grasp needs the task's target: the name of the obstacle the goal grasps");
+  if (!task.target)
+    throw InputError(task.file.string(), "target",
+                     "a grasp needs the task's target: the name of the obstacle the goal grasps");
   target_ = *task.target;
   const RobotModel& model = *task.robot;
   const int palm = model.palmLink();
-  if (palm < 0) throw InputError(model.urdfPath().string(), "end_effector", "the robot names no palm link, so no link is the hand's");
+  if (palm < 0)
+    throw InputError(model.urdfPath().string(), "end_effector",
+                     "the robot names no palm link, so no link is the hand's");
   for (std::size_t l = 0; l < model.links().size(); ++l)
     for (int link = static_cast<int>(l); link >= 0;) {
       if (link == palm) {
@@ -21,7 +25,9 @@ GraspContactRule::GraspContactRule(const Task& task) {
     }
 }
 
-bool GraspContactRule::allows(const CollisionPair& pair) const { return pair.second == target_ && isHandLink(pair.first); }
+bool GraspContactRule::allows(const CollisionPair& pair) const {
+  return pair.second == target_ && isHandLink(pair.first);
+}
 
 CollisionReport GraspContactRule::forbidden(const CollisionReport& report) const {
   CollisionReport result;
@@ -56,7 +62,8 @@ GoalContact requirePlannableGoal(ExactCollisionChecker& checker, const Task& tas
   if (goal.contact != GoalContact::Refused) return goal.contact;
   const std::string rule = task.target ? "only hand links may touch, and only the target '" + *task.target + "'"
                                        : "a goal may touch only the task's target, and the task names none";
-  throw InputError(task.file.string(), "goal", "the goal configuration is in collision: " + pairsText(goal.pairs) + " (" + rule + ")");
+  throw InputError(task.file.string(), "goal",
+                   "the goal configuration is in collision: " + pairsText(goal.pairs) + " (" + rule + ")");
 }
 
 }  // namespace pmdplan

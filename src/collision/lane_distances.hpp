@@ -21,8 +21,8 @@ template <class V>
 /// few ulps; the callers' band is twelve orders of magnitude larger); with `Below` the distance is
 /// a lower bound (sqrtBelow), else the correctly rounded root.
 template <bool Below, class V, class M>
-[[gnu::always_inline]] inline V segmentDistanceWith(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1, V inverseA,
-                                                    V inverseE, M pointP, M pointQ) {
+[[gnu::always_inline]] inline V segmentDistanceWith(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0,
+                                                    const Point<V>& q1, V inverseA, V inverseE, M pointP, M pointQ) {
   const V tiny = splat<V>(1e-24), one = splat<V>(1.0), zero = splat<V>(0.0);
   const Point<V> d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   const V a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r), c = dot(d1, r), b = dot(d1, d2);
@@ -44,20 +44,23 @@ template <bool Below, class V, class M>
 
 /// segmentDistanceWith for any segments: their lengths from the points, lane by lane.
 template <class V>
-[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1) {
+[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0,
+                                                const Point<V>& q1) {
   const V tiny = splat<V>(1e-24), one = splat<V>(1.0);
   const Point<V> d1 = p1 - p0, d2 = q1 - q0;
   const V a = dot(d1, d1), e = dot(d2, d2);
   const auto pointP = a <= tiny, pointQ = e <= tiny;
-  return segmentDistanceWith<false>(p0, p1, q0, q1, one / select(pointP, one, a), one / select(pointQ, one, e), pointP, pointQ);
+  return segmentDistanceWith<false>(p0, p1, q0, q1, one / select(pointP, one, a), one / select(pointQ, one, e), pointP,
+                                    pointQ);
 }
 
 /// segmentDistanceWith for segments whose lengths are known and the same in every lane (a part's),
 /// given as 1 / their squared lengths (0 for a point): two divisions fewer; a lower bound.
 template <class V>
-[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0, const Point<V>& q1, double inverseA,
-                                                double inverseE) {
-  return segmentDistanceWith<true>(p0, p1, q0, q1, splat<V>(inverseA), splat<V>(inverseE), inverseA == 0.0, inverseE == 0.0);
+[[gnu::always_inline]] inline V segmentDistance(const Point<V>& p0, const Point<V>& p1, const Point<V>& q0,
+                                                const Point<V>& q1, double inverseA, double inverseE) {
+  return segmentDistanceWith<true>(p0, p1, q0, q1, splat<V>(inverseA), splat<V>(inverseE), inverseA == 0.0,
+                                   inverseE == 0.0);
 }
 
 /// 1 / the squared length of the segment a-b, 0 if it is (within 1e-12 m) a point.
@@ -71,8 +74,8 @@ inline double inverseSquaredLength(const double* a, const double* b) {
 /// beyond R and G its least axial distance beyond h, every point of the segment is at least
 /// sqrt(F^2 + G^2) from the cylinder (exact for a point).
 template <class V>
-[[gnu::always_inline]] inline V segmentCylinderDistance(const Point<V>& a, const Point<V>& b, const Point<V>& c, const Point<V>& w, double R,
-                                                        double h) {
+[[gnu::always_inline]] inline V segmentCylinderDistance(const Point<V>& a, const Point<V>& b, const Point<V>& c,
+                                                        const Point<V>& w, double R, double h) {
   const V zero = splat<V>(0.0);
   const Point<V> pa = a - c, pb = b - c;
   const V za = dot(pa, w), zb = dot(pb, w);

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "mesh_enclosure.hpp"
-#include "urdf_capsules.hpp"
 #include "pmdplan/collision/convex_distance.hpp"
+#include "urdf_capsules.hpp"
 
 namespace pmdplan {
 namespace {

@@ -6,8 +6,8 @@ namespace pmdplan {
 namespace {
 
 /// Does the ray from `origin` along `direction` cross the triangle (Moller and Trumbore)?
-bool crosses(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-             const Eigen::Vector3d& c) {
+bool crosses(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, const Eigen::Vector3d& a,
+             const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   const Eigen::Vector3d ab = b - a, ac = c - a, p = direction.cross(ac);
   const double determinant = ab.dot(p);
   if (determinant == 0.0) return false;

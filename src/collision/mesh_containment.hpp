@@ -12,12 +12,12 @@
 namespace pmdplan {
 
 class MeshInterior {
-public:
+ public:
   explicit MeshInterior(std::shared_ptr<const TriangleMesh> mesh);
   /// Is `point` (in the mesh frame) inside the mesh?
   bool contains(const Eigen::Vector3d& point) const;
 
-private:
+ private:
   std::shared_ptr<const TriangleMesh> mesh_;
   Eigen::AlignedBox3d box_;
 };

@@ -20,9 +20,9 @@ struct Candidate {
   Form form = Form::Box;
   double volume = std::numeric_limits<double>::infinity();
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< columns; Cylinder, Capsule: axis is column 2
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();     ///< in the mesh frame
-  Eigen::Vector3d half = Eigen::Vector3d::Zero();       ///< Box: half extents; Cylinder: radius, half length
-  double from = 0.0, to = 0.0, radius = 0.0;            ///< Capsule: its core along the axis through centre
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();    ///< in the mesh frame
+  Eigen::Vector3d half = Eigen::Vector3d::Zero();      ///< Box: half extents; Cylinder: radius, half length
+  double from = 0.0, to = 0.0, radius = 0.0;           ///< Capsule: its core along the axis through centre
 };
 
 /// Candidates with axes `frame` (orthonormal columns): the box, and along each column a cylinder
@@ -47,7 +47,8 @@ void tryFrame(const std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d&
     }
     // The core is fitted to the tight radius, so that the margin is left all round.
     const double tight = std::sqrt(radius2), radius = tight + kMargin;
-    Candidate cylinder{Form::Cylinder, 2.0 * kPi * radius * radius * half(k), axes, frame * middle, {radius, half(k), 0.0}};
+    Candidate cylinder{
+        Form::Cylinder, 2.0 * kPi * radius * radius * half(k), axes, frame * middle, {radius, half(k), 0.0}};
     if (cylinder.volume < best.volume) best = cylinder;
     // The capsule core [from, to] along the axis: every point within `radius` of it.
     double from = std::numeric_limits<double>::infinity(), to = -from;
@@ -57,8 +58,14 @@ void tryFrame(const std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d&
       from = std::min(from, local(k) + reach), to = std::max(to, local(k) - reach);
     }
     if (from > to) from = to = 0.5 * (from + to);
-    Candidate capsule{Form::Capsule, kPi * radius * radius * (to - from) + 4.0 / 3.0 * kPi * radius * radius * radius,
-                      axes, frame * middle, Eigen::Vector3d::Zero(), from, to, radius};
+    Candidate capsule{Form::Capsule,
+                      kPi * radius * radius * (to - from) + 4.0 / 3.0 * kPi * radius * radius * radius,
+                      axes,
+                      frame * middle,
+                      Eigen::Vector3d::Zero(),
+                      from,
+                      to,
+                      radius};
     if (capsule.volume < best.volume) best = capsule;
   }
 }

@@ -8,15 +8,16 @@ namespace {
 
 void addPairs(PathValidation& result, const CollisionReport& report) {
   for (const auto& pair : report.pairs)
-    if (std::find(result.collisions.pairs.begin(), result.collisions.pairs.end(), pair) == result.collisions.pairs.end())
+    if (std::find(result.collisions.pairs.begin(), result.collisions.pairs.end(), pair) ==
+        result.collisions.pairs.end())
       result.collisions.pairs.push_back(pair);
 }
 
 }  // namespace
 
 PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker& segments,
-                            const std::vector<Configuration>& path, const Configuration& start, const Configuration& goal,
-                            std::optional<ClosingPhase> closing) {
+                            const std::vector<Configuration>& path, const Configuration& start,
+                            const Configuration& goal, std::optional<ClosingPhase> closing) {
   PathValidation result;
   const auto& model = checker.model();
   const auto fail = [&](std::string problem) {
@@ -45,7 +46,10 @@ PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker
     if (inspection.free) continue;
     char where[200];
     std::snprintf(where, sizeof where, "segment %zu (%zu -> %zu%s): collides at %.1f %%: ", i, i, i + 1,
-                  closingSegment ? ", closing" : closing ? ", approach" : "", 100.0 * *inspection.firstCollision);
+                  closingSegment ? ", closing"
+                  : closing      ? ", approach"
+                                 : "",
+                  100.0 * *inspection.firstCollision);
     fail(where + pairsText(inspection.collisions));
     addPairs(result, inspection.collisions);
   }

@@ -90,10 +90,12 @@ std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const Ski
   return pairs;
 }
 
-std::string companionFileText(const RobotModel& model, const std::vector<SkippablePair>& pairs, const std::string& generatedBy) {
+std::string companionFileText(const RobotModel& model, const std::vector<SkippablePair>& pairs,
+                              const std::string& generatedBy) {
   const int palm = model.palmLink();
   return companionFileText(model.name(), model.groupDefinitions(),
-                           palm >= 0 ? model.links()[static_cast<std::size_t>(palm)].name : std::string(), pairs, generatedBy);
+                           palm >= 0 ? model.links()[static_cast<std::size_t>(palm)].name : std::string(), pairs,
+                           generatedBy);
 }
 
 std::string companionFileText(const std::string& robotName, const std::vector<RobotModel::GroupDefinition>& groups,
@@ -101,11 +103,12 @@ std::string companionFileText(const std::string& robotName, const std::vector<Ro
                               const std::string& generatedBy) {
   // XML forbids "--" inside a comment (and a comment ending in "-").
   std::string comment = generatedBy;
-  for (std::size_t at = comment.find("--"); at != std::string::npos; at = comment.find("--", at)) comment.insert(at + 1, " ");
+  for (std::size_t at = comment.find("--"); at != std::string::npos; at = comment.find("--", at))
+    comment.insert(at + 1, " ");
   if (!comment.empty() && comment.back() == '-') comment += ' ';
   std::ostringstream out;
-  out << "<?xml version=\"1.0\"?>\n<!-- Planning groups and self-collision pairs that may be skipped.\n     "
-      << comment << " -->\n<robot name=\"" << robotName << "\">\n";
+  out << "<?xml version=\"1.0\"?>\n<!-- Planning groups and self-collision pairs that may be skipped.\n     " << comment
+      << " -->\n<robot name=\"" << robotName << "\">\n";
   for (const auto& [name, joints] : groups) {
     out << "  <group name=\"" << name << "\">\n";
     for (const auto& j : joints) out << "    <joint name=\"" << j << "\"/>\n";
@@ -118,7 +121,8 @@ std::string companionFileText(const std::string& robotName, const std::vector<Ro
     out << "  <end_effector name=\"hand\" parent_link=\"" << palmLink << "\" group=\"hand\""
         << (has("arm") ? " parent_group=\"arm\"" : "") << "/>\n";
   for (const auto& p : pairs)
-    out << "  <disable_collisions link1=\"" << p.linkA << "\" link2=\"" << p.linkB << "\" reason=\"" << p.reason << "\"/>\n";
+    out << "  <disable_collisions link1=\"" << p.linkA << "\" link2=\"" << p.linkB << "\" reason=\"" << p.reason
+        << "\"/>\n";
   out << "</robot>\n";
   return out.str();
 }

@@ -29,13 +29,15 @@ double reachBelow(const RobotModel& model, int j, const std::vector<double>& sha
 
 }  // namespace
 
-SweptDistanceBound::SweptDistanceBound(const RobotModel& model) : leverArms_(static_cast<std::size_t>(model.dof()), 0.0) {
+SweptDistanceBound::SweptDistanceBound(const RobotModel& model)
+    : leverArms_(static_cast<std::size_t>(model.dof()), 0.0) {
   std::vector<double> shapeReach(model.links().size(), 0.0);
   for (std::size_t l = 0; l < model.links().size(); ++l)
     for (const auto& placed : model.links()[l].collisionShapes) {
       const double r = boundingRadius(placed.shape);
       if (!std::isfinite(r))
-        throw std::invalid_argument("link '" + model.links()[l].name + "': a mesh whose triangles were not read (loadMeshShape)");
+        throw std::invalid_argument("link '" + model.links()[l].name +
+                                    "': a mesh whose triangles were not read (loadMeshShape)");
       shapeReach[l] = std::max(shapeReach[l], placed.pose.translation().norm() + r);
     }
   const auto& joints = model.joints();
@@ -43,7 +45,8 @@ SweptDistanceBound::SweptDistanceBound(const RobotModel& model) : leverArms_(sta
     const Joint& joint = joints[j];
     if (joint.type == JointType::Fixed) continue;
     // A prismatic joint moves everything below it by exactly its displacement.
-    const double perUnit = joint.type == JointType::Prismatic ? 1.0 : reachBelow(model, static_cast<int>(j), shapeReach);
+    const double perUnit =
+        joint.type == JointType::Prismatic ? 1.0 : reachBelow(model, static_cast<int>(j), shapeReach);
     if (joint.activeIndex >= 0)
       leverArms_[static_cast<std::size_t>(joint.activeIndex)] += perUnit;
     else if (joint.mimicSource >= 0) {
@@ -68,7 +71,8 @@ long SweptDistanceBound::intervals(const Configuration& from, const Configuratio
   if (!(needed <= static_cast<double>(kMaxSegmentIntervals))) {
     std::ostringstream text;
     text << "a segment would need " << needed << " states at " << tolerance * 1000.0 << " mm, more than the limit of "
-         << kMaxSegmentIntervals << " (a larger tolerance, or the robot's joint ranges or mimic multipliers are too large)";
+         << kMaxSegmentIntervals
+         << " (a larger tolerance, or the robot's joint ranges or mimic multipliers are too large)";
     throw InputError("", "--tolerance-mm", text.str());
   }
   return std::max(1L, static_cast<long>(needed));

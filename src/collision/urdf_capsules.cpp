@@ -10,10 +10,12 @@ namespace {
 bool sameLength(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(a, b)); }
 
 /// The unused sphere of `shapes` centred on `centre` with radius `radius`, or -1.
-int endSphere(const std::vector<PlacedShape>& shapes, const std::vector<char>& used, const Eigen::Vector3d& centre, double radius) {
+int endSphere(const std::vector<PlacedShape>& shapes, const std::vector<char>& used, const Eigen::Vector3d& centre,
+              double radius) {
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const auto* sphere = std::get_if<SphereShape>(&shapes[i].shape);
-    if (sphere && !used[i] && sameLength(sphere->radius, radius) && (shapes[i].pose.translation() - centre).norm() <= 1e-9)
+    if (sphere && !used[i] && sameLength(sphere->radius, radius) &&
+        (shapes[i].pose.translation() - centre).norm() <= 1e-9)
       return static_cast<int>(i);
   }
   return -1;
@@ -38,8 +40,9 @@ std::vector<UrdfCapsule> urdfCapsules(const std::vector<PlacedShape>& shapes) {
     if (capA >= 0 && capB >= 0) {
       used[static_cast<std::size_t>(capA)] = used[static_cast<std::size_t>(capB)] = 1;
       capsule.capA = capA, capsule.capB = capB;
-      capsule.radius = std::max({cylinder->radius, std::get<SphereShape>(shapes[static_cast<std::size_t>(capA)].shape).radius,
-                                 std::get<SphereShape>(shapes[static_cast<std::size_t>(capB)].shape).radius});
+      capsule.radius =
+          std::max({cylinder->radius, std::get<SphereShape>(shapes[static_cast<std::size_t>(capA)].shape).radius,
+                    std::get<SphereShape>(shapes[static_cast<std::size_t>(capB)].shape).radius});
     }
     result.push_back(capsule);
   }

@@ -10,9 +10,9 @@
 namespace pmdplan {
 
 struct UrdfCapsule {
-  int cylinder = -1;        ///< index into the link's collision shapes
-  int capA = -1, capB = -1; ///< the spheres on its cap centres (-1: a plain cylinder)
-  double radius = 0.0;      ///< the largest of the three radii (they agree to rounding)
+  int cylinder = -1;         ///< index into the link's collision shapes
+  int capA = -1, capB = -1;  ///< the spheres on its cap centres (-1: a plain cylinder)
+  double radius = 0.0;       ///< the largest of the three radii (they agree to rounding)
 };
 
 /// One entry per cylinder of `shapes`, in order.

@@ -52,7 +52,7 @@ void installCleanupHandlers() {
 
 /// Registers a temporary file for removal on a signal while it exists.
 class PendingTemporary {
-public:
+ public:
   explicit PendingTemporary(const std::string& path) {
     std::lock_guard lock(pendingMutex);
     for (std::size_t i = 0; i < kSlots && !path.empty() && path.size() < PATH_MAX; ++i) {
@@ -69,7 +69,7 @@ public:
   PendingTemporary(const PendingTemporary&) = delete;
   PendingTemporary& operator=(const PendingTemporary&) = delete;
 
-private:
+ private:
   int slot_ = -1;
 };
 
@@ -129,7 +129,8 @@ fs::path checkedTarget(const fs::path& path, const std::string& option) {
                      "exists and is not a regular file (a folder, device or pipe); pmdplan writes only regular files");
   const fs::path folder = target.parent_path();
   if (!fs::is_directory(folder, error))
-    throw InputError(path.string(), option, "the folder " + folder.string() + " does not exist (or is not a folder); create it first");
+    throw InputError(path.string(), option,
+                     "the folder " + folder.string() + " does not exist (or is not a folder); create it first");
   if (::access(folder.c_str(), W_OK) != 0) failWrite(path, "cannot write into " + folder.string(), errno);
   return target;
 }
@@ -141,8 +142,8 @@ void checkOutputPath(const fs::path& path, const std::string& option, std::initi
   for (const fs::path& input : inputs) {
     std::error_code error;
     if (!input.empty() && fs::equivalent(target, input, error))
-      throw InputError(path.string(), option, "is also an input of this command (" + input.string() +
-                                                  "); write the output to another file");
+      throw InputError(path.string(), option,
+                       "is also an input of this command (" + input.string() + "); write the output to another file");
   }
 }
 
@@ -150,14 +151,16 @@ void createOutputFolder(const fs::path& directory, const std::string& option) {
   std::error_code error;
   fs::create_directories(directory, error);
   if (error || !fs::is_directory(directory))
-    throw InputError(directory.string(), option, "cannot create the folder" + (error ? ": " + error.message() : std::string()));
+    throw InputError(directory.string(), option,
+                     "cannot create the folder" + (error ? ": " + error.message() : std::string()));
 }
 
 void writeFileAtomically(const fs::path& path, std::string_view content) {
   const fs::path target = checkedTarget(path, "output");
   installCleanupHandlers();
   removeStaleTemporaries(target);
-  std::string pattern = (target.parent_path() / (temporaryPrefix(target) + std::to_string(::getpid()) + "-XXXXXX")).string();
+  std::string pattern =
+      (target.parent_path() / (temporaryPrefix(target) + std::to_string(::getpid()) + "-XXXXXX")).string();
   // The signals wait while the file is created and registered, so the handler always knows it.
   sigset_t cleanupSignals, previous;
   sigemptyset(&cleanupSignals);
@@ -198,7 +201,8 @@ std::string readTextFile(const fs::path& path) {
   std::error_code error;
   if (fs::is_directory(path, error)) throw InputError(path.string(), "", "is a folder; expected a file");
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw InputError(path.string(), "", std::string("cannot open the file for reading: ") + std::strerror(errno));
+  if (fd < 0)
+    throw InputError(path.string(), "", std::string("cannot open the file for reading: ") + std::strerror(errno));
   std::string text;
   char buffer[1 << 16];
   for (;;) {
@@ -212,8 +216,9 @@ std::string readTextFile(const fs::path& path) {
     if (n == 0) break;
     if (text.size() + static_cast<std::size_t>(n) > kMaxInputFileBytes) {
       ::close(fd);
-      throw InputError(path.string(), "", "longer than " + std::to_string(kMaxInputFileBytes >> 20) +
-                                              " MiB, the largest input pmdplan reads");
+      throw InputError(
+          path.string(), "",
+          "longer than " + std::to_string(kMaxInputFileBytes >> 20) + " MiB, the largest input pmdplan reads");
     }
     text.append(buffer, static_cast<std::size_t>(n));
   }

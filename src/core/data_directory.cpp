@@ -21,8 +21,9 @@ std::filesystem::path resolveTaskPath(const std::string& nameOrPath) {
   }
   const auto builtIn = dataDirectory() / "scenes" / (nameOrPath + ".yaml");
   if (!std::filesystem::exists(builtIn))
-    throw InputError("", "task", "'" + nameOrPath + "' is neither a built-in task (" +
-                                     (dataDirectory() / "scenes").string() + ") nor a task file");
+    throw InputError("", "task",
+                     "'" + nameOrPath + "' is neither a built-in task (" + (dataDirectory() / "scenes").string() +
+                         ") nor a task file");
   return builtIn;
 }
 

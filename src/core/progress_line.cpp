@@ -1,7 +1,8 @@
 #include "pmdplan/core/progress_line.hpp"
 
-#include <cstdio>
 #include <unistd.h>
+
+#include <cstdio>
 
 namespace pmdplan {
 

@@ -6,10 +6,9 @@ namespace pmdplan {
 
 const std::array<std::string_view, kCyberGloveSensorCount>& cyberGloveSensorNames() {
   static const std::array<std::string_view, kCyberGloveSensorCount> names{
-      "ThumbRotate", "ThumbMPJ",  "ThumbIJ",   "ThumbAb",      "IndexMPJ",  "IndexPIJ",
-      "IndexDIJ",    "MiddleMPJ", "MiddlePIJ", "MiddleDIJ",    "MiddleIndexAb", "RingMPJ",
-      "RingPIJ",     "RingDIJ",   "RingMiddleAb", "PinkieMPJ", "PinkiePIJ", "PinkieDIJ",
-      "PinkieRingAb", "PalmArch", "WristPitch", "WristYaw"};
+      "ThumbRotate", "ThumbMPJ",  "ThumbIJ",       "ThumbAb",  "IndexMPJ",   "IndexPIJ", "IndexDIJ",     "MiddleMPJ",
+      "MiddlePIJ",   "MiddleDIJ", "MiddleIndexAb", "RingMPJ",  "RingPIJ",    "RingDIJ",  "RingMiddleAb", "PinkieMPJ",
+      "PinkiePIJ",   "PinkieDIJ", "PinkieRingAb",  "PalmArch", "WristPitch", "WristYaw"};
   return names;
 }
 

@@ -41,14 +41,16 @@ GloveCalibration parseGloveCalibration(std::string_view text, const std::string&
     yaml_input::expectMap(entry.second, file, context);
     yaml_input::rejectUnknownKeys(entry.second, {"gain", "offset"}, file, context);
     SensorCalibration& sensor = calibration.sensors[static_cast<std::size_t>(index)];
-    sensor.gain = yaml_input::number(yaml_input::required(entry.second, "gain", file, context), file, context + ".gain");
+    sensor.gain =
+        yaml_input::number(yaml_input::required(entry.second, "gain", file, context), file, context + ".gain");
     sensor.offset =
         yaml_input::number(yaml_input::required(entry.second, "offset", file, context), file, context + ".offset");
   }
   for (int s = 0; s < kCyberGloveSensorCount; ++s)
     if (!seen[static_cast<std::size_t>(s)])
       throw InputError(file, yaml_input::lineOf(sensors) + " (sensors)",
-                       "no calibration for sensor " + std::string(cyberGloveSensorNames()[static_cast<std::size_t>(s)]) +
+                       "no calibration for sensor " +
+                           std::string(cyberGloveSensorNames()[static_cast<std::size_t>(s)]) +
                            "; every one of the 22 sensors needs {gain, offset}");
 
   if (const YAML::Node terms = root["cross_terms"]; terms.IsDefined() && !terms.IsNull()) {
@@ -81,8 +83,8 @@ std::string formatGloveCalibration(const GloveCalibration& calibration) {
   text += "sensors:\n";
   for (int s = 0; s < kCyberGloveSensorCount; ++s) {
     const SensorCalibration& sensor = calibration.sensors[static_cast<std::size_t>(s)];
-    text += "  " + std::string(cyberGloveSensorNames()[static_cast<std::size_t>(s)]) + ": {gain: " +
-            exactNumberText(sensor.gain) + ", offset: " + exactNumberText(sensor.offset) + "}\n";
+    text += "  " + std::string(cyberGloveSensorNames()[static_cast<std::size_t>(s)]) +
+            ": {gain: " + exactNumberText(sensor.gain) + ", offset: " + exactNumberText(sensor.offset) + "}\n";
   }
   if (calibration.crossTerms.empty()) return text + "cross_terms: []\n";
   text += "cross_terms:\n";

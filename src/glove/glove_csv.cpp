@@ -16,8 +16,7 @@ constexpr std::string_view kTimeColumn = "time_s";
 
 std::string_view trimmed(std::string_view text) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
-    text.remove_suffix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
   return text;
 }
 
@@ -54,8 +53,7 @@ std::vector<int> readHeader(std::string_view line, int lineNumber, const std::st
       throw InputError(source, field,
                        "unknown column '" + name + "'; expected time_s (optional) and the sensor columns " +
                            std::string(cyberGloveSensorList()));
-    if (seen[static_cast<std::size_t>(sensor)])
-      throw InputError(source, field, "column " + name + " appears twice");
+    if (seen[static_cast<std::size_t>(sensor)]) throw InputError(source, field, "column " + name + " appears twice");
     seen[static_cast<std::size_t>(sensor)] = true;
     columns.push_back(sensor);
   }
@@ -71,8 +69,7 @@ std::vector<int> readHeader(std::string_view line, int lineNumber, const std::st
 
 std::uint8_t readSensorCell(std::string_view cell, const std::string& source, const std::string& field) {
   if (const auto whole = parseWholeNumber(cell)) {
-    if (*whole > 255)
-      throw InputError(source, field, std::string(cell) + " is outside the raw sensor range 0-255");
+    if (*whole > 255) throw InputError(source, field, std::string(cell) + " is outside the raw sensor range 0-255");
     return static_cast<std::uint8_t>(*whole);
   }
   if (const auto number = parseFiniteNumber(cell); number && std::floor(*number) == *number)
@@ -116,8 +113,9 @@ GloveRecording parseGloveCsv(std::string_view text, const std::string& sourceNam
     double time = 0.0;
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const int column = columns[c];
-      const std::string columnName =
-          column < 0 ? std::string(kTimeColumn) : std::string(cyberGloveSensorNames()[static_cast<std::size_t>(column)]);
+      const std::string columnName = column < 0
+                                         ? std::string(kTimeColumn)
+                                         : std::string(cyberGloveSensorNames()[static_cast<std::size_t>(column)]);
       const std::string field = lineField(lineNumber) + ", column " + columnName;
       if (column < 0) {
         const auto value = parseFiniteNumber(cells[c]);

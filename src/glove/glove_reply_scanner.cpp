@@ -23,7 +23,8 @@ std::optional<GloveFrame> GloveReplyScanner::next() {
     }
     if (buffer_.size() < replyBytes) return std::nullopt;
     bool valid = buffer_[replyBytes - 1] == '\0';
-    for (std::size_t s = 1; valid && s <= static_cast<std::size_t>(kCyberGloveSensorCount); ++s) valid = buffer_[s] != '\0';
+    for (std::size_t s = 1; valid && s <= static_cast<std::size_t>(kCyberGloveSensorCount); ++s)
+      valid = buffer_[s] != '\0';
     if (!valid) {
       // Not a reply after all: this 'G' was a reading or noise; look for the next one.
       ++skipped_;

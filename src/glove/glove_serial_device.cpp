@@ -43,16 +43,19 @@ std::string supportedBaudRates() {
 
 GloveSerialDevice::GloveSerialDevice(const std::string& path, int baud) : path_(path) {
   if (!isSupportedBaudRate(baud))
-    throw InputError(path, "--baud", "unsupported baud rate " + std::to_string(baud) + "; expected one of " + supportedBaudRates());
+    throw InputError(path, "--baud",
+                     "unsupported baud rate " + std::to_string(baud) + "; expected one of " + supportedBaudRates());
   fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd_ < 0)
-    throw InputError(path, "--device", std::string("cannot open the glove's serial device: ") + std::strerror(errno) +
-                                           " (is the glove plugged in, and may this user open the device?)");
+    throw InputError(path, "--device",
+                     std::string("cannot open the glove's serial device: ") + std::strerror(errno) +
+                         " (is the glove plugged in, and may this user open the device?)");
   termios settings{};
   if (::tcgetattr(fd_, &settings) != 0) {
     const std::string reason = std::strerror(errno);
     ::close(fd_);
-    throw InputError(path, "--device", "not a serial device (" + reason + "); to play a recorded file, use --replay FILE");
+    throw InputError(path, "--device",
+                     "not a serial device (" + reason + "); to play a recorded file, use --replay FILE");
   }
   ::cfmakeraw(&settings);
   settings.c_cflag |= CLOCAL | CREAD;

@@ -15,9 +15,9 @@ std::string replyField(std::size_t reply, std::size_t byteOffset) {
 GloveRecording parseGloveSerialStream(std::string_view bytes, const std::string& sourceName) {
   constexpr auto replyBytes = static_cast<std::size_t>(kGloveSerialReplyBytes);
   if (bytes.empty())
-    throw InputError(sourceName, "byte 0",
-                     "empty stream; expected 'G' replies of " + std::to_string(replyBytes) +
-                         " bytes ('G', 22 sensor bytes, 0)");
+    throw InputError(
+        sourceName, "byte 0",
+        "empty stream; expected 'G' replies of " + std::to_string(replyBytes) + " bytes ('G', 22 sensor bytes, 0)");
   GloveRecording recording;
   recording.source = sourceName;
   const std::size_t replies = bytes.size() / replyBytes;
@@ -29,9 +29,9 @@ GloveRecording parseGloveSerialStream(std::string_view bytes, const std::string&
                        "truncated reply: " + std::to_string(bytes.size() - start) + " bytes left, expected " +
                            std::to_string(replyBytes));
     if (bytes[start] != 'G')
-      throw InputError(sourceName, replyField(r, start),
-                       "a reply must start with 'G' (0x47), found byte " +
-                           std::to_string(static_cast<unsigned char>(bytes[start])));
+      throw InputError(
+          sourceName, replyField(r, start),
+          "a reply must start with 'G' (0x47), found byte " + std::to_string(static_cast<unsigned char>(bytes[start])));
     GloveFrame frame{};
     for (int s = 0; s < kCyberGloveSensorCount; ++s) {
       const auto value = static_cast<unsigned char>(bytes[start + 1 + static_cast<std::size_t>(s)]);

@@ -32,8 +32,7 @@ std::optional<double> parseFiniteNumber(std::string_view text) {
   if (!((first >= '0' && first <= '9') || first == '.')) return std::nullopt;
   double value = 0.0;
   const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (result.ec != std::errc() || result.ptr != text.data() + text.size() || !std::isfinite(value))
-    return std::nullopt;
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
   return value;
 }
 

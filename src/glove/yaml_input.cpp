@@ -18,7 +18,9 @@ void rejectRepeatedKeys(const YAML::Node& node, const std::string& file) {
   std::size_t visited = 0;
   while (!pending.empty()) {
     if (++visited > kMaxYamlNodes)  // aliases can repeat a subtree exponentially often
-      throw InputError(file, "document", "more than " + std::to_string(kMaxYamlNodes) + " values (through aliases?), the most pmdplan reads");
+      throw InputError(
+          file, "document",
+          "more than " + std::to_string(kMaxYamlNodes) + " values (through aliases?), the most pmdplan reads");
     const YAML::Node current = pending.back();
     pending.pop_back();
     if (current.IsSequence())
@@ -27,7 +29,8 @@ void rejectRepeatedKeys(const YAML::Node& node, const std::string& file) {
     std::set<std::string> seen;
     for (const auto& entry : current) {
       if (entry.first.IsScalar() && !seen.insert(entry.first.Scalar()).second)
-        throw InputError(file, lineOf(entry.first), "key '" + entry.first.Scalar() + "' is given twice; each key may appear once");
+        throw InputError(file, lineOf(entry.first),
+                         "key '" + entry.first.Scalar() + "' is given twice; each key may appear once");
       pending.push_back(entry.second);
     }
   }
@@ -68,8 +71,8 @@ void expectSequence(const YAML::Node& node, const std::string& file, const std::
   if (!node.IsSequence()) throw InputError(file, lineOf(node) + where(context), "expected a list");
 }
 
-void rejectUnknownKeys(const YAML::Node& map, std::initializer_list<std::string_view> known,
-                       const std::string& file, const std::string& context) {
+void rejectUnknownKeys(const YAML::Node& map, std::initializer_list<std::string_view> known, const std::string& file,
+                       const std::string& context) {
   for (const auto& entry : map) {
     const std::string key = entry.first.Scalar();
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
@@ -83,9 +86,9 @@ void rejectUnknownKeys(const YAML::Node& map, std::initializer_list<std::string_
 double number(const YAML::Node& node, const std::string& file, const std::string& context) {
   const auto value = node.IsScalar() ? parseFiniteNumber(node.Scalar()) : std::nullopt;
   if (!value)
-    throw InputError(file, lineOf(node) + where(context),
-                     "'" + (node.IsScalar() ? node.Scalar() : std::string("(not a value)")) +
-                         "' is not a finite number");
+    throw InputError(
+        file, lineOf(node) + where(context),
+        "'" + (node.IsScalar() ? node.Scalar() : std::string("(not a value)")) + "' is not a finite number");
   return *value;
 }
 
@@ -116,11 +119,20 @@ std::string quoted(std::string_view value) {
   std::string out = "\"";
   for (const char c : value) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default: out += c;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        out += c;
     }
   }
   return out + "\"";

@@ -76,7 +76,8 @@ void EventStreamServer::answer(int connection) {
   const std::lock_guard lock(mutex_);
   const std::string head =
       "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nCache-Control: no-store\r\nConnection: keep-alive\r\n\r\n"
-      "retry: 1000\n\n" + last_;
+      "retry: 1000\n\n" +
+      last_;
   if (!sendNow(connection, head)) {
     ::close(connection);
     return;

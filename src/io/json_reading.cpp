@@ -35,7 +35,8 @@ const nlohmann::json& requireArray(const nlohmann::json& value, const Place& pla
 void checkKeys(const nlohmann::json& object, const Place& place, std::initializer_list<const char*> allowed,
                std::initializer_list<const char*> required) {
   for (auto item = object.begin(); item != object.end(); ++item) {
-    const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* name) { return item.key() == name; });
+    const bool known =
+        std::any_of(allowed.begin(), allowed.end(), [&](const char* name) { return item.key() == name; });
     if (!known) {
       std::string expected;
       for (const char* name : allowed) {
@@ -57,7 +58,8 @@ std::string readString(const nlohmann::json& value, const Place& place) {
 }
 
 std::uint64_t readUnsigned(const nlohmann::json& value, const Place& place) {
-  if (!value.is_number_unsigned()) place.fail("expected a whole number >= 0, found " + (value.is_number() ? value.dump() : typeName(value)));
+  if (!value.is_number_unsigned())
+    place.fail("expected a whole number >= 0, found " + (value.is_number() ? value.dump() : typeName(value)));
   return value.get<std::uint64_t>();
 }
 

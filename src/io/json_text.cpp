@@ -19,7 +19,8 @@ bool isPlainArray(const nlohmann::ordered_json& value) {
 
 /// Objects of one key holding a plain value or a plain array stay on one line ({"positions": [...]}).
 bool isOneLineObject(const nlohmann::ordered_json& value) {
-  return value.is_object() && value.size() == 1 && (isPlain(value.begin().value()) || isPlainArray(value.begin().value()));
+  return value.is_object() && value.size() == 1 &&
+         (isPlain(value.begin().value()) || isPlainArray(value.begin().value()));
 }
 
 void append(std::string& out, const nlohmann::ordered_json& value, int indent);

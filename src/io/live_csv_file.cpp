@@ -13,11 +13,13 @@ LiveCsvFile::LiveCsvFile(std::filesystem::path target, const std::string& option
                          const std::string& header, std::initializer_list<std::filesystem::path> inputs)
     : target_(std::move(target)) {
   checkOutputPath(target_, option, inputs);
-  if (std::filesystem::is_symlink(target_)) target_ = std::filesystem::canonical(target_);  // the link stays, as for atomic writes
+  if (std::filesystem::is_symlink(target_))
+    target_ = std::filesystem::canonical(target_);  // the link stays, as for atomic writes
   partial_ = target_;
   partial_ += ".partial";
   file_ = std::fopen(partial_.c_str(), "w");
-  if (!file_) throw InputError(partial_.string(), option, std::string("cannot write the recording: ") + std::strerror(errno));
+  if (!file_)
+    throw InputError(partial_.string(), option, std::string("cannot write the recording: ") + std::strerror(errno));
   std::string head;
   for (const auto& note : notes) head += "# " + note + "\n";
   head += header + "\n";
@@ -47,11 +49,14 @@ long long LiveCsvFile::finish() {
     std::filesystem::remove(partial_, error);
     return 0;
   }
-  if (!closed) throw InputError(partial_.string(), "", "cannot finish the recording (closing it failed); its rows are in this file");
+  if (!closed)
+    throw InputError(partial_.string(), "",
+                     "cannot finish the recording (closing it failed); its rows are in this file");
   std::filesystem::rename(partial_, target_, error);
   if (error)
-    throw InputError(partial_.string(), "", "cannot rename the recording to " + target_.string() + ": " + error.message() +
-                                                "; its rows are in this file");
+    throw InputError(
+        partial_.string(), "",
+        "cannot rename the recording to " + target_.string() + ": " + error.message() + "; its rows are in this file");
   return rows_;
 }
 

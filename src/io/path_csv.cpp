@@ -34,7 +34,8 @@ std::string formatPathCsv(const std::vector<std::string>& jointNames, const std:
       throw std::invalid_argument("formatPathCsv: point " + std::to_string(row) + " has " + std::to_string(q.size()) +
                                   " values for " + std::to_string(jointNames.size()) + " joints");
     for (Eigen::Index k = 0; k < q.size(); ++k) {
-      if (!std::isfinite(q[k])) throw std::invalid_argument("formatPathCsv: point " + std::to_string(row) + " is not finite");
+      if (!std::isfinite(q[k]))
+        throw std::invalid_argument("formatPathCsv: point " + std::to_string(row) + " is not finite");
       if (k != 0) out += ',';
       out += exactNumberText(q[k]);
     }

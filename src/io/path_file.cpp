@@ -33,7 +33,8 @@ std::string formatPathFile(const PathFile& path, const PathFileOptions& options)
   document["points"] = std::move(points);
   if (path.closingFrom) {
     const std::size_t k = *path.closingFrom, last = path.points.size() - 1;
-    if (k == 0 || k >= last) throw std::invalid_argument("formatPathFile: the closing phase must start inside the path");
+    if (k == 0 || k >= last)
+      throw std::invalid_argument("formatPathFile: the closing phase must start inside the path");
     nlohmann::ordered_json phases;
     phases["approach"] = nlohmann::ordered_json::array({0, k});
     phases["closing"] = nlohmann::ordered_json::array({k, last});
@@ -64,12 +65,13 @@ std::size_t readPhases(const nlohmann::json& value, const json_reading::Place& p
     const Place phase = place.key(names[p]);
     const nlohmann::json& range = requireArray(member(value, names[p]), phase);
     if (range.size() != 2) phase.fail("expected [first point, last point]");
-    for (int e = 0; e < 2; ++e) bounds[p][e] = readUnsigned(range[static_cast<std::size_t>(e)], phase.index(static_cast<std::size_t>(e)));
+    for (int e = 0; e < 2; ++e)
+      bounds[p][e] = readUnsigned(range[static_cast<std::size_t>(e)], phase.index(static_cast<std::size_t>(e)));
   }
   const std::size_t k = bounds[0][1];
   if (bounds[0][0] != 0 || bounds[1][0] != k || bounds[1][1] + 1 != points || k == 0 || k + 1 >= points)
-    place.fail("expected {\"approach\": [0, k], \"closing\": [k, " + std::to_string(points - 1) +
-               "]} with 0 < k < " + std::to_string(points - 1) + " (the pre-grasp's index)");
+    place.fail("expected {\"approach\": [0, k], \"closing\": [k, " + std::to_string(points - 1) + "]} with 0 < k < " +
+               std::to_string(points - 1) + " (the pre-grasp's index)");
   return k;
 }
 
@@ -102,7 +104,8 @@ PathFile parsePathFile(const std::string& text, const std::string& file) {
 
   const Place pointsPlace = root.key("points");
   const nlohmann::json& points = requireArray(member(document, "points"), pointsPlace);
-  if (points.size() < 2) pointsPlace.fail("expected at least two points (start and goal), found " + std::to_string(points.size()));
+  if (points.size() < 2)
+    pointsPlace.fail("expected at least two points (start and goal), found " + std::to_string(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Place pointPlace = pointsPlace.index(i);
     requireObject(points[i], pointPlace);
@@ -110,15 +113,16 @@ PathFile parsePathFile(const std::string& text, const std::string& file) {
     const Place positionsPlace = pointPlace.key("positions");
     const nlohmann::json& positions = requireArray(member(points[i], "positions"), positionsPlace);
     if (positions.size() != path.jointNames.size())
-      positionsPlace.fail("expected " + std::to_string(path.jointNames.size()) + " values (one per joint name), found " +
-                          std::to_string(positions.size()));
+      positionsPlace.fail("expected " + std::to_string(path.jointNames.size()) +
+                          " values (one per joint name), found " + std::to_string(positions.size()));
     Configuration q(static_cast<Eigen::Index>(positions.size()));
     for (std::size_t k = 0; k < positions.size(); ++k)
       q[static_cast<Eigen::Index>(k)] = readFinite(positions[k], positionsPlace.index(k));
     path.points.push_back(std::move(q));
   }
 
-  if (document.contains("phases")) path.closingFrom = readPhases(member(document, "phases"), root.key("phases"), path.points.size());
+  if (document.contains("phases"))
+    path.closingFrom = readPhases(member(document, "phases"), root.key("phases"), path.points.size());
 
   const Place mimicPlace = root.key("mimic");
   const nlohmann::json& mimic = requireObject(member(document, "mimic"), mimicPlace);

@@ -33,8 +33,10 @@ std::vector<std::size_t> columnsOfRobotJoints(const PathFile& path, const RobotM
   std::vector<std::size_t> columns;
   for (const auto& name : robot.activeJointNames()) {
     const auto found = column.find(name);
-    if (found == column.end()) missing.push_back(name);
-    else columns.push_back(found->second);
+    if (found == column.end())
+      missing.push_back(name);
+    else
+      columns.push_back(found->second);
   }
   for (const auto& name : path.jointNames)
     if (robot.activeIndex(name) < 0) unknown.push_back(name);
@@ -59,15 +61,17 @@ void checkMimic(const PathFile& path, const RobotModel& robot, const std::string
     if (relation.source != want.source || std::abs(relation.multiplier - want.multiplier) > 1e-12 ||
         std::abs(relation.offset - want.offset) > 1e-12)
       throw InputError(file, field,
-                       "expected [\"" + want.source + "\", " + numberText(want.multiplier) + ", " + numberText(want.offset) +
-                           "] as in robot '" + robot.name() + "', found [\"" + relation.source + "\", " +
-                           numberText(relation.multiplier) + ", " + numberText(relation.offset) + "]");
+                       "expected [\"" + want.source + "\", " + numberText(want.multiplier) + ", " +
+                           numberText(want.offset) + "] as in robot '" + robot.name() + "', found [\"" +
+                           relation.source + "\", " + numberText(relation.multiplier) + ", " +
+                           numberText(relation.offset) + "]");
     expected.erase(found);
   }
   if (!expected.empty()) {
     std::vector<std::string> left;
     for (const auto& [name, relation] : expected) left.push_back(name);
-    throw InputError(file, "mimic", "robot '" + robot.name() + "' couples joints the file leaves out: " + joinNames(left));
+    throw InputError(file, "mimic",
+                     "robot '" + robot.name() + "' couples joints the file leaves out: " + joinNames(left));
   }
 }
 

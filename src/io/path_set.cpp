@@ -39,13 +39,15 @@ void checkOneTask(const std::vector<ViewInput>& inputs) {
   for (std::size_t i = 1; i < inputs.size(); ++i)
     if (inputs[i].path.task != inputs.front().path.task)
       throw InputError(inputs[i].file.string(), "task",
-                       "the path was planned for task '" + inputs[i].path.task + "', but " + inputs.front().file.string() +
-                           " for task '" + inputs.front().path.task + "'; expected paths of one task to view together");
+                       "the path was planned for task '" + inputs[i].path.task + "', but " +
+                           inputs.front().file.string() + " for task '" + inputs.front().path.task +
+                           "'; expected paths of one task to view together");
 }
 
 std::string benchPathFileName(const std::string& task, const std::string& planner, std::uint64_t seed) {
   std::string name = planner;
-  std::replace_if(name.begin(), name.end(), [](char c) { return c == ':' || c == '/' || c == '.'; }, '-');
+  std::replace_if(
+      name.begin(), name.end(), [](char c) { return c == ':' || c == '/' || c == '.'; }, '-');
   return task + "." + name + ".seed" + std::to_string(seed) + ".path.json";
 }
 
@@ -64,7 +66,8 @@ std::vector<std::filesystem::path> benchSeedPaths(const std::filesystem::path& f
     if (!entry.is_regular_file() || !std::regex_match(file, match, name)) continue;
     const std::uint64_t fileSeed = std::stoull(match[3].str());
     seeds.insert(fileSeed);
-    if (fileSeed == seed) found.push_back({plannerRank(match[2].str()), match[2].str() + "/" + match[1].str(), entry.path()});
+    if (fileSeed == seed)
+      found.push_back({plannerRank(match[2].str()), match[2].str() + "/" + match[1].str(), entry.path()});
   }
   if (found.empty()) {
     std::string there;
@@ -74,9 +77,8 @@ std::vector<std::filesystem::path> benchSeedPaths(const std::filesystem::path& f
                          ".path.json, written by pmdplan bench --paths); " +
                          (there.empty() ? "the folder holds none" : "seeds there: " + there));
   }
-  std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
-    return a.rank != b.rank ? a.rank < b.rank : a.planner < b.planner;
-  });
+  std::sort(found.begin(), found.end(),
+            [](const Found& a, const Found& b) { return a.rank != b.rank ? a.rank < b.rank : a.planner < b.planner; });
   std::vector<std::filesystem::path> files;
   for (const Found& f : found) files.push_back(f.file);
   return files;
@@ -95,7 +97,8 @@ void addOverlayPaths(ViewerData& data, const Task& task, const std::vector<ViewI
     return input.file.filename().string() + ": " + warning;
   };
   Json warnings = Json::array();
-  for (const auto& warning : document["warnings"]) warnings.push_back(prefixed(inputs.front(), warning.get<std::string>()));
+  for (const auto& warning : document["warnings"])
+    warnings.push_back(prefixed(inputs.front(), warning.get<std::string>()));
   document["path"]["name"] = viewPathName(inputs.front());
   document["path"]["file"] = inputs.front().file.filename().string();
   std::string planners = inputs.front().path.planner;

@@ -24,7 +24,8 @@ PathTimeline pathTimeline(const std::vector<Configuration>& waypoints, const Rob
   if (waypoints.empty()) throw std::invalid_argument("pathTimeline: no waypoints");
   if (!(parameters.stateSpacing > 0.0)) throw std::invalid_argument("pathTimeline: the state spacing must be positive");
   for (const Configuration& q : waypoints)
-    if (q.size() != robot.dof()) throw std::invalid_argument("pathTimeline: a waypoint's size differs from the robot's joint count");
+    if (q.size() != robot.dof())
+      throw std::invalid_argument("pathTimeline: a waypoint's size differs from the robot's joint count");
 
   PathTimeline timeline;
   timeline.waypointStates.push_back(0);

@@ -40,7 +40,8 @@ void sendAll(int connection, const std::string& bytes) {
   }
 }
 
-std::string response(int status, const std::string& reason, const std::string& type, const std::string& body, bool withBody) {
+std::string response(int status, const std::string& reason, const std::string& type, const std::string& body,
+                     bool withBody) {
   std::ostringstream head;
   head << "HTTP/1.1 " << status << " " << reason << "\r\n"
        << "Content-Type: " << type << "\r\n"
@@ -88,8 +89,9 @@ int listenOnLoopback(int port, int& boundPort) {
   if (::bind(listening, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(listening, 16) != 0) {
     const std::string reason = std::strerror(errno);
     ::close(listening);
-    throw InputError("", "--serve", "cannot listen on 127.0.0.1:" + std::to_string(port) + " (" + reason +
-                                        "); pick another port, or 0 for any free one");
+    throw InputError("", "--serve",
+                     "cannot listen on 127.0.0.1:" + std::to_string(port) + " (" + reason +
+                         "); pick another port, or 0 for any free one");
   }
   socklen_t length = sizeof address;
   ::getsockname(listening, reinterpret_cast<sockaddr*>(&address), &length);
@@ -135,8 +137,10 @@ std::string staticFileResponse(const std::filesystem::path& root, const std::str
   std::string method, target;
   line >> method >> target;
   std::string relative;
-  if (method != "GET" && method != "HEAD") return response(405, "Method Not Allowed", "text/plain", "only GET and HEAD\n", true);
-  if (!decodeTarget(target, relative)) return response(403, "Forbidden", "text/plain", "outside the viewer folder\n", method == "GET");
+  if (method != "GET" && method != "HEAD")
+    return response(405, "Method Not Allowed", "text/plain", "only GET and HEAD\n", true);
+  if (!decodeTarget(target, relative))
+    return response(403, "Forbidden", "text/plain", "outside the viewer folder\n", method == "GET");
   const std::filesystem::path file = root / relative;
   std::ifstream in(file, std::ios::binary);
   if (!std::filesystem::is_regular_file(file) || !in)

@@ -1,6 +1,5 @@
 #include "pmdplan/io/statistics_json.hpp"
 
-
 #include "json_reading.hpp"
 
 namespace pmdplan {
@@ -36,21 +35,22 @@ PlanningStatistics statisticsFromJson(const nlohmann::json& json, const std::str
   using namespace json_reading;
   const Place place{file, field};
   requireObject(json, place);
-  checkKeys(json, place,
-            {"status", "planning_time_s", "smoothing_time_s", "final_rho_a", "sweeps", "max_trials", "samples",
-             "arm_trials", "roadmap_nodes", "roadmap_edges", "nodes_by_hand_dimension", "path_nodes",
-             "path_nodes_before_smoothing", "path_length", "path_length_before_smoothing", "state_checks",
-             "motion_checks", "collision_checks"},
-            {"status", "final_rho_a", "sweeps", "max_trials", "samples", "arm_trials", "roadmap_nodes",
-             "roadmap_edges", "nodes_by_hand_dimension", "path_nodes", "path_nodes_before_smoothing", "path_length",
-             "path_length_before_smoothing", "state_checks", "motion_checks", "collision_checks"});
+  checkKeys(
+      json, place,
+      {"status", "planning_time_s", "smoothing_time_s", "final_rho_a", "sweeps", "max_trials", "samples", "arm_trials",
+       "roadmap_nodes", "roadmap_edges", "nodes_by_hand_dimension", "path_nodes", "path_nodes_before_smoothing",
+       "path_length", "path_length_before_smoothing", "state_checks", "motion_checks", "collision_checks"},
+      {"status", "final_rho_a", "sweeps", "max_trials", "samples", "arm_trials", "roadmap_nodes", "roadmap_edges",
+       "nodes_by_hand_dimension", "path_nodes", "path_nodes_before_smoothing", "path_length",
+       "path_length_before_smoothing", "state_checks", "motion_checks", "collision_checks"});
   PlanningStatistics s;
   const auto count = [&](const char* key) { return readUnsigned(member(json, key), place.key(key)); };
   const auto number = [&](const char* key) { return readFinite(member(json, key), place.key(key)); };
 
   const std::string status = readString(member(json, "status"), place.key("status"));
   const auto parsed = parsePlannerStatus(status);
-  if (!parsed) place.key("status").fail("unknown status '" + status + "'; expected solved, time_limit, sample_limit, ...");
+  if (!parsed)
+    place.key("status").fail("unknown status '" + status + "'; expected solved, time_limit, sample_limit, ...");
   s.status = *parsed;
   if (json.contains("planning_time_s")) s.planningTime = number("planning_time_s");
   if (json.contains("smoothing_time_s")) s.smoothingTime = number("smoothing_time_s");
@@ -76,7 +76,8 @@ PlanningStatistics statisticsFromJson(const nlohmann::json& json, const std::str
   s.stateChecks = count("state_checks");
   s.motionChecks = count("motion_checks");
   if (count("collision_checks") != s.collisionChecks())
-    place.key("collision_checks").fail("must equal state_checks + motion_checks (" + std::to_string(s.collisionChecks()) + ")");
+    place.key("collision_checks")
+        .fail("must equal state_checks + motion_checks (" + std::to_string(s.collisionChecks()) + ")");
   return s;
 }
 

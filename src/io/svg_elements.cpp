@@ -17,11 +17,16 @@ std::string px(double value) { return fixed(value, 1); }
 std::string escaped(const std::string& content) {
   std::string out;
   for (const char c : content) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -31,8 +36,8 @@ std::string text(double x, double y, const std::string& content, const std::stri
 }
 
 std::string line(double x1, double y1, double x2, double y2, const std::string& stroke, const std::string& attributes) {
-  return "<line x1=\"" + px(x1) + "\" y1=\"" + px(y1) + "\" x2=\"" + px(x2) + "\" y2=\"" + px(y2) + "\" stroke=\"" + stroke + "\"" +
-         (attributes.empty() ? "" : " " + attributes) + "/>\n";
+  return "<line x1=\"" + px(x1) + "\" y1=\"" + px(y1) + "\" x2=\"" + px(x2) + "\" y2=\"" + px(y2) + "\" stroke=\"" +
+         stroke + "\"" + (attributes.empty() ? "" : " " + attributes) + "/>\n";
 }
 
 }  // namespace pmdplan::svg

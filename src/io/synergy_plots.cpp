@@ -64,7 +64,8 @@ double pearson(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const Eigen::VectorXd da = a.array() - a.mean();
   const Eigen::VectorXd db = b.array() - b.mean();
   const double rounding = 1e-12 * std::sqrt(static_cast<double>(a.size()));
-  if (da.norm() <= rounding * (1.0 + std::abs(a.mean())) || db.norm() <= rounding * (1.0 + std::abs(b.mean()))) return std::nan("");
+  if (da.norm() <= rounding * (1.0 + std::abs(a.mean())) || db.norm() <= rounding * (1.0 + std::abs(b.mean())))
+    return std::nan("");
   return da.dot(db) / (da.norm() * db.norm());
 }
 
@@ -77,32 +78,40 @@ std::string signedText(double value) {
 
 const char* paperWord(PaperCorrelation correlation) {
   switch (correlation) {
-    case PaperCorrelation::Positive: return "positive";
-    case PaperCorrelation::Negative: return "negative";
-    case PaperCorrelation::Uncorrelated: return "none";
+    case PaperCorrelation::Positive:
+      return "positive";
+    case PaperCorrelation::Negative:
+      return "negative";
+    case PaperCorrelation::Uncorrelated:
+      return "none";
   }
   return "";
 }
 
 std::string svgOpen(double width, double height) {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(width) + "\" height=\"" + px(height) + "\" viewBox=\"0 0 " +
-         px(width) + " " + px(height) + "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(width) + "\" height=\"" + px(height) +
+         "\" viewBox=\"0 0 " + px(width) + " " + px(height) +
+         "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 }
 
 /// One scatter panel with its top-left corner at (left, top).
-std::string scatterPanel(double left, double top, const Eigen::VectorXd& x, const Eigen::VectorXd& y, const JointLimit& xJoint,
-                         const JointLimit& yJoint, const Figure7JointPair& pair, int maxPoints) {
-  constexpr double kWidth = 400, kHeight = 330, kMarginLeft = 58, kMarginRight = 16, kMarginTop = 46, kMarginBottom = 46;
+std::string scatterPanel(double left, double top, const Eigen::VectorXd& x, const Eigen::VectorXd& y,
+                         const JointLimit& xJoint, const JointLimit& yJoint, const Figure7JointPair& pair,
+                         int maxPoints) {
+  constexpr double kWidth = 400, kHeight = 330, kMarginLeft = 58, kMarginRight = 16, kMarginTop = 46,
+                   kMarginBottom = 46;
   const double toDeg = 180.0 / std::numbers::pi;
   const Scale sx{xJoint.lower * toDeg, xJoint.upper * toDeg, left + kMarginLeft, left + kWidth - kMarginRight};
   const Scale sy{yJoint.lower * toDeg, yJoint.upper * toDeg, top + kHeight - kMarginBottom, top + kMarginTop};
   std::string svg;
   const double r = pearson(x, y);
   const double rPaper = r * paperSignOf(pair.first) * paperSignOf(pair.second);
-  svg += text(left + kWidth / 2, top + 18, pair.first + "  vs  " + pair.second, std::string(kFont) + " font-size=\"13\" text-anchor=\"middle\" font-weight=\"bold\"");
-  svg += text(left + kWidth / 2, top + 35,
-              "r = " + signedText(r) + "  (paper's signs: " + signedText(rPaper) + ")   paper: " + paperWord(pair.paper),
-              std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\" fill=\"#333\"");
+  svg += text(left + kWidth / 2, top + 18, pair.first + "  vs  " + pair.second,
+              std::string(kFont) + " font-size=\"13\" text-anchor=\"middle\" font-weight=\"bold\"");
+  svg +=
+      text(left + kWidth / 2, top + 35,
+           "r = " + signedText(r) + "  (paper's signs: " + signedText(rPaper) + ")   paper: " + paperWord(pair.paper),
+           std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\" fill=\"#333\"");
   // Grid and ticks.
   for (int axis = 0; axis < 2; ++axis) {
     const Scale& s = axis == 0 ? sx : sy;
@@ -110,23 +119,28 @@ std::string scatterPanel(double left, double top, const Eigen::VectorXd& x, cons
     for (double v = std::ceil(s.low / step - 1e-9) * step; v <= s.high + 1e-9; v += step) {
       if (axis == 0) {
         svg += line(s(v), sy.from, s(v), sy.to, "#e4e4e4");
-        svg += text(s(v), sy.from + 14, fixed(v, step < 1 ? 1 : 0), std::string(kFont) + " font-size=\"10\" text-anchor=\"middle\"");
+        svg += text(s(v), sy.from + 14, fixed(v, step < 1 ? 1 : 0),
+                    std::string(kFont) + " font-size=\"10\" text-anchor=\"middle\"");
       } else {
         svg += line(sx.from, s(v), sx.to, s(v), "#e4e4e4");
-        svg += text(sx.from - 5, s(v) + 3.5, fixed(v, step < 1 ? 1 : 0), std::string(kFont) + " font-size=\"10\" text-anchor=\"end\"");
+        svg += text(sx.from - 5, s(v) + 3.5, fixed(v, step < 1 ? 1 : 0),
+                    std::string(kFont) + " font-size=\"10\" text-anchor=\"end\"");
       }
     }
   }
   svg += "<rect x=\"" + px(sx.from) + "\" y=\"" + px(sy.to) + "\" width=\"" + px(sx.to - sx.from) + "\" height=\"" +
          px(sy.from - sy.to) + "\" fill=\"none\" stroke=\"#555\"/>\n";
-  svg += text((sx.from + sx.to) / 2, top + kHeight - 10, xJoint.name + " (deg)", std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\"");
+  svg += text((sx.from + sx.to) / 2, top + kHeight - 10, xJoint.name + " (deg)",
+              std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\"");
   const double yMid = (sy.from + sy.to) / 2;
   svg += text(left + 14, yMid, yJoint.name + " (deg)",
-              std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\" transform=\"rotate(-90 " + px(left + 14) + " " + px(yMid) + ")\"");
+              std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\" transform=\"rotate(-90 " + px(left + 14) +
+                  " " + px(yMid) + ")\"");
   // Points: zero-length path segments with round caps draw as dots at a dozen bytes each.
   const Eigen::Index frames = x.size();
   const Eigen::Index drawn = std::min<Eigen::Index>(frames, std::max(1, maxPoints));
-  svg += "<path fill=\"none\" stroke=\"#1f5fa8\" stroke-opacity=\"0.35\" stroke-width=\"3\" stroke-linecap=\"round\" d=\"";
+  svg +=
+      "<path fill=\"none\" stroke=\"#1f5fa8\" stroke-opacity=\"0.35\" stroke-width=\"3\" stroke-linecap=\"round\" d=\"";
   for (Eigen::Index i = 0; i < drawn; ++i) {
     const Eigen::Index frame = i * frames / drawn;
     svg += 'M';
@@ -160,42 +174,51 @@ std::string cumulativeVarianceSvg(const SynergyModel& model) {
     svg += text(kLeft - 6, sy(v) + 4, std::to_string(v), std::string(kFont) + " font-size=\"11\" text-anchor=\"end\"");
   }
   svg += text(18, (sy.from + sy.to) / 2, "variance (%)",
-              std::string(kFont) + " font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " + px((sy.from + sy.to) / 2) + ")\"");
+              std::string(kFont) + " font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 18 " +
+                  px((sy.from + sy.to) / 2) + ")\"");
   std::string cumulativeLine, markers;
   double cumulative = 0.0;
   for (int k = 0; k < n; ++k) {
     const double share = 100.0 * model.varianceFraction[k];
     cumulative += share;
     const double barWidth = slot * 0.56;
-    svg += "<rect x=\"" + px(centre(k) - barWidth / 2) + "\" y=\"" + px(sy(share)) + "\" width=\"" + px(barWidth) + "\" height=\"" +
-           px(sy(0) - sy(share)) + "\" fill=\"#8fb3dc\"/>\n";
-    svg += text(centre(k), sy(0) + 16, std::to_string(k + 1), std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\"");
+    svg += "<rect x=\"" + px(centre(k) - barWidth / 2) + "\" y=\"" + px(sy(share)) + "\" width=\"" + px(barWidth) +
+           "\" height=\"" + px(sy(0) - sy(share)) + "\" fill=\"#8fb3dc\"/>\n";
+    svg += text(centre(k), sy(0) + 16, std::to_string(k + 1),
+                std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\"");
     if (k > 0) cumulativeLine += ' ';
     cumulativeLine += px(centre(k));
     cumulativeLine += ',';
     cumulativeLine += px(sy(cumulative));
     markers += "<circle cx=\"" + px(centre(k)) + "\" cy=\"" + px(sy(cumulative)) + "\" r=\"3.5\" fill=\"#b03a2e\"/>\n";
-    markers += text(centre(k), sy(cumulative) - 8, fixed(cumulative, 1), std::string(kFont) + " font-size=\"10\" text-anchor=\"middle\" fill=\"#b03a2e\"");
+    markers += text(centre(k), sy(cumulative) - 8, fixed(cumulative, 1),
+                    std::string(kFont) + " font-size=\"10\" text-anchor=\"middle\" fill=\"#b03a2e\"");
   }
-  svg += "<polyline fill=\"none\" stroke=\"#b03a2e\" stroke-width=\"2\" points=\"" + cumulativeLine + "\"/>\n" + markers;
+  svg +=
+      "<polyline fill=\"none\" stroke=\"#b03a2e\" stroke-width=\"2\" points=\"" + cumulativeLine + "\"/>\n" + markers;
   for (int k = 0; k < std::min<int>(n, static_cast<int>(kPaperCumulativePercent.size())); ++k) {
     const double cx = centre(k), cy = sy(kPaperCumulativePercent[static_cast<std::size_t>(k)]);
-    svg += "<path d=\"M" + px(cx) + " " + px(cy - 6) + "l6 6l-6 6l-6 -6z\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
+    svg += "<path d=\"M" + px(cx) + " " + px(cy - 6) +
+           "l6 6l-6 6l-6 -6z\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
   }
-  svg += text((kLeft + kWidth - kRight) / 2, kHeight - 22, "number of PMDs", std::string(kFont) + " font-size=\"12\" text-anchor=\"middle\"");
+  svg += text((kLeft + kWidth - kRight) / 2, kHeight - 22, "number of PMDs",
+              std::string(kFont) + " font-size=\"12\" text-anchor=\"middle\"");
   // Legend.
   const double lx = kWidth - kRight - 190, ly = kHeight - kBottom - 70;
-  svg += "<rect x=\"" + px(lx) + "\" y=\"" + px(ly) + "\" width=\"180\" height=\"58\" fill=\"white\" stroke=\"#bbb\"/>\n";
+  svg +=
+      "<rect x=\"" + px(lx) + "\" y=\"" + px(ly) + "\" width=\"180\" height=\"58\" fill=\"white\" stroke=\"#bbb\"/>\n";
   svg += "<rect x=\"" + px(lx + 8) + "\" y=\"" + px(ly + 8) + "\" width=\"14\" height=\"10\" fill=\"#8fb3dc\"/>\n";
   svg += text(lx + 28, ly + 17, "share of each PMD", std::string(kFont) + " font-size=\"11\"");
   svg += line(lx + 8, ly + 31, lx + 22, ly + 31, "#b03a2e", 2);
   svg += text(lx + 28, ly + 35, "cumulative", std::string(kFont) + " font-size=\"11\"");
-  svg += "<path d=\"M" + px(lx + 15) + " " + px(ly + 42) + "l5 5l-5 5l-5 -5z\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
+  svg += "<path d=\"M" + px(lx + 15) + " " + px(ly + 42) +
+         "l5 5l-5 5l-5 -5z\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
   svg += text(lx + 28, ly + 51, "paper (1-3 PMDs)", std::string(kFont) + " font-size=\"11\"");
   return svg + "</svg>\n";
 }
 
-std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyPlotOptions& options) {
+std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& joints,
+                          const SynergyPlotOptions& options) {
   if (postures.cols() != static_cast<Eigen::Index>(joints.size()))
     throw std::invalid_argument("jointPairsSvg: one posture column per joint expected");
   const auto column = [&](const std::string& name) -> int {
@@ -212,16 +235,18 @@ std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& jo
   const int rows = (static_cast<int>(panels.size()) + 1) / 2;
   std::string svg = svgOpen(2 * kPanelWidth, kHeader + rows * kPanelHeight);
   const Eigen::Index drawn = std::min<Eigen::Index>(postures.rows(), options.maxScatterPoints);
-  svg += text(kPanelWidth, 22, "Joint pairs of the paper's Fig. 7", std::string(kFont) + " font-size=\"15\" text-anchor=\"middle\" font-weight=\"bold\"");
+  svg += text(kPanelWidth, 22, "Joint pairs of the paper's Fig. 7",
+              std::string(kFont) + " font-size=\"15\" text-anchor=\"middle\" font-weight=\"bold\"");
   svg += text(kPanelWidth, 40,
               "r over all " + std::to_string(postures.rows()) + " postures; " + std::to_string(drawn) +
                   " drawn. Flexion positive here; the paper counts it negative.",
               std::string(kFont) + " font-size=\"11\" text-anchor=\"middle\" fill=\"#555\"");
   for (std::size_t p = 0; p < panels.size(); ++p) {
     const auto& [pair, columns] = panels[p];
-    svg += scatterPanel(static_cast<double>(p % 2) * kPanelWidth, kHeader + static_cast<double>(p / 2) * kPanelHeight,
-                        postures.col(columns[0]), postures.col(columns[1]), joints[static_cast<std::size_t>(columns[0])],
-                        joints[static_cast<std::size_t>(columns[1])], *pair, options.maxScatterPoints);
+    svg +=
+        scatterPanel(static_cast<double>(p % 2) * kPanelWidth, kHeader + static_cast<double>(p / 2) * kPanelHeight,
+                     postures.col(columns[0]), postures.col(columns[1]), joints[static_cast<std::size_t>(columns[0])],
+                     joints[static_cast<std::size_t>(columns[1])], *pair, options.maxScatterPoints);
   }
   return svg + "</svg>\n";
 }

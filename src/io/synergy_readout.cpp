@@ -22,8 +22,10 @@ std::vector<int> modelJointSlots(const SynergyModel& model, const RobotModel& ro
   return slots;
 }
 
-SynergyReadout synergyReadout(const SynergyModel& model, const std::vector<int>& slots, const Configuration& configuration) {
-  if (slots.size() != model.joints.size()) throw std::invalid_argument("synergyReadout: one slot per model joint expected");
+SynergyReadout synergyReadout(const SynergyModel& model, const std::vector<int>& slots,
+                              const Configuration& configuration) {
+  if (slots.size() != model.joints.size())
+    throw std::invalid_argument("synergyReadout: one slot per model joint expected");
   const int n = model.jointCount();
   Eigen::VectorXd posture(n);
   for (int j = 0; j < n; ++j)
@@ -35,7 +37,8 @@ SynergyReadout synergyReadout(const SynergyModel& model, const std::vector<int>&
   Eigen::VectorXd deviation = posture - model.mean;
   for (std::size_t a = 0; a < model.ownAxisJoints.size(); ++a) {
     const int j = model.jointIndex(model.ownAxisJoints[a]);
-    if (j < 0) throw std::invalid_argument("synergyReadout: own-axis joint '" + model.ownAxisJoints[a] + "' not in the model");
+    if (j < 0)
+      throw std::invalid_argument("synergyReadout: own-axis joint '" + model.ownAxisJoints[a] + "' not in the model");
     readout.ownAxis[static_cast<Eigen::Index>(a)] = posture[j];
     deviation[j] = 0.0;
   }

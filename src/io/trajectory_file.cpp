@@ -15,7 +15,8 @@ namespace {
 constexpr const char* kFormat = "pmdplan-joint-trajectory";
 
 nlohmann::ordered_json values(const Eigen::VectorXd& v, std::size_t size, const char* what) {
-  if (static_cast<std::size_t>(v.size()) != size) throw std::invalid_argument(std::string("trajectory: wrong number of ") + what);
+  if (static_cast<std::size_t>(v.size()) != size)
+    throw std::invalid_argument(std::string("trajectory: wrong number of ") + what);
   nlohmann::ordered_json array = nlohmann::ordered_json::array();
   for (Eigen::Index k = 0; k < v.size(); ++k) array.push_back(v[k]);
   return array;
@@ -24,9 +25,11 @@ nlohmann::ordered_json values(const Eigen::VectorXd& v, std::size_t size, const 
 Eigen::VectorXd readValues(const nlohmann::json& value, const json_reading::Place& place, std::size_t size) {
   const nlohmann::json& array = json_reading::requireArray(value, place);
   if (array.size() != size)
-    place.fail("expected " + std::to_string(size) + " values (one per joint name), found " + std::to_string(array.size()));
+    place.fail("expected " + std::to_string(size) + " values (one per joint name), found " +
+               std::to_string(array.size()));
   Eigen::VectorXd v(static_cast<Eigen::Index>(size));
-  for (std::size_t k = 0; k < size; ++k) v[static_cast<Eigen::Index>(k)] = json_reading::readFinite(array[k], place.index(k));
+  for (std::size_t k = 0; k < size; ++k)
+    v[static_cast<Eigen::Index>(k)] = json_reading::readFinite(array[k], place.index(k));
   return v;
 }
 
@@ -99,16 +102,20 @@ TrajectoryFile parseTrajectoryFile(const std::string& text, const std::string& f
   const Place root{file, ""};
   requireObject(document, root);
   checkKeys(document, root,
-            {"format", "version", "task", "planner", "seed", "joint_names", "mimic", "limits", "blend_tolerance", "duration", "points"},
-            {"format", "version", "task", "planner", "seed", "joint_names", "mimic", "limits", "blend_tolerance", "duration", "points"});
-  if (readString(member(document, "format"), root.key("format")) != kFormat) root.key("format").fail(std::string("expected \"") + kFormat + "\"");
+            {"format", "version", "task", "planner", "seed", "joint_names", "mimic", "limits", "blend_tolerance",
+             "duration", "points"},
+            {"format", "version", "task", "planner", "seed", "joint_names", "mimic", "limits", "blend_tolerance",
+             "duration", "points"});
+  if (readString(member(document, "format"), root.key("format")) != kFormat)
+    root.key("format").fail(std::string("expected \"") + kFormat + "\"");
   if (readUnsigned(member(document, "version"), root.key("version")) != 1) root.key("version").fail("expected 1");
   TrajectoryFile out;
   out.task = readString(member(document, "task"), root.key("task"));
   out.planner = readString(member(document, "planner"), root.key("planner"));
   out.seed = readUnsigned(member(document, "seed"), root.key("seed"));
   const nlohmann::json& names = requireArray(member(document, "joint_names"), root.key("joint_names"));
-  for (std::size_t i = 0; i < names.size(); ++i) out.trajectory.jointNames.push_back(readString(names[i], root.key("joint_names").index(i)));
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out.trajectory.jointNames.push_back(readString(names[i], root.key("joint_names").index(i)));
   const std::size_t n = out.trajectory.jointNames.size();
   if (n == 0) root.key("joint_names").fail("expected at least one joint name");
   const Place mimicPlace = root.key("mimic");
@@ -117,8 +124,8 @@ TrajectoryFile parseTrajectoryFile(const std::string& text, const std::string& f
     const Place entryPlace = mimicPlace.key(item.key());
     const nlohmann::json& entry = requireArray(item.value(), entryPlace);
     if (entry.size() != 3) entryPlace.fail("expected [source joint, multiplier, offset]");
-    out.mimic.push_back({item.key(), readString(entry[0], entryPlace.index(0)), readFinite(entry[1], entryPlace.index(1)),
-                         readFinite(entry[2], entryPlace.index(2))});
+    out.mimic.push_back({item.key(), readString(entry[0], entryPlace.index(0)),
+                         readFinite(entry[1], entryPlace.index(1)), readFinite(entry[2], entryPlace.index(2))});
   }
   const Place limitsPlace = root.key("limits");
   const nlohmann::json& limits = requireObject(member(document, "limits"), limitsPlace);
@@ -127,7 +134,8 @@ TrajectoryFile parseTrajectoryFile(const std::string& text, const std::string& f
     const Eigen::VectorXd v = readValues(member(limits, key), limitsPlace.key(key), n);
     for (Eigen::Index k = 0; k < v.size(); ++k)
       if (!(v[k] > 0.0)) limitsPlace.key(key).index(static_cast<std::size_t>(k)).fail("expected a positive limit");
-    (std::string(key) == "velocity" ? out.velocityLimits : out.accelerationLimits).assign(v.data(), v.data() + v.size());
+    (std::string(key) == "velocity" ? out.velocityLimits : out.accelerationLimits)
+        .assign(v.data(), v.data() + v.size());
   }
   out.blendTolerance = readFinite(member(document, "blend_tolerance"), root.key("blend_tolerance"));
   readFinite(member(document, "duration"), root.key("duration"));
@@ -145,7 +153,8 @@ TrajectoryFile parseTrajectoryFile(const std::string& text, const std::string& f
     state.acceleration = readValues(member(points[i], "accelerations"), place.key("accelerations"), n);
     state.time = readFinite(member(points[i], "time_from_start"), place.key("time_from_start"));
     if (i == 0 ? state.time != 0.0 : !(state.time > out.trajectory.points.back().time))
-      place.key("time_from_start").fail(i == 0 ? "expected 0 for the first point" : "expected a time after the previous point's");
+      place.key("time_from_start")
+          .fail(i == 0 ? "expected 0 for the first point" : "expected a time after the previous point's");
     out.trajectory.points.push_back(std::move(state));
   }
   return out;

@@ -1,7 +1,7 @@
 #include "pmdplan/io/viewer_data.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <type_traits>
 
 #include "pmdplan/core/atomic_file.hpp"
@@ -32,11 +32,14 @@ Json shapeJson(const Shape& shape, const std::string& meshFile) {
   return std::visit(
       [&](const auto& s) -> Json {
         using T = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<T, BoxShape>) return Json{{"type", "box"}, {"size", numbers(s.size)}};
+        if constexpr (std::is_same_v<T, BoxShape>)
+          return Json{{"type", "box"}, {"size", numbers(s.size)}};
         else if constexpr (std::is_same_v<T, CylinderShape>)
           return Json{{"type", "cylinder"}, {"radius", s.radius}, {"length", s.length}};
-        else if constexpr (std::is_same_v<T, SphereShape>) return Json{{"type", "sphere"}, {"radius", s.radius}};
-        else return Json{{"type", "mesh"}, {"file", meshFile}, {"scale", numbers(s.scale)}};
+        else if constexpr (std::is_same_v<T, SphereShape>)
+          return Json{{"type", "sphere"}, {"radius", s.radius}};
+        else
+          return Json{{"type", "mesh"}, {"file", meshFile}, {"scale", numbers(s.scale)}};
       },
       shape);
 }
@@ -77,14 +80,16 @@ Json robotMeshFiles(const RobotModel& robot, std::vector<ViewerFolderFile>& file
 }
 
 Json robotJson(const RobotModel& robot, std::vector<ViewerFolderFile>& files) {
-  Json lower = Json::array(), upper = Json::array(), hand = Json::array(), mimic = Json::object(), held = Json::object();
+  Json lower = Json::array(), upper = Json::array(), hand = Json::array(), mimic = Json::object(),
+       held = Json::object();
   for (const auto& [name, value] : robot.heldJoints()) held[name] = value;
   for (const JointLimit& joint : robot.activeJoints()) {
     lower.push_back(joint.lower);
     upper.push_back(joint.upper);
   }
   if (robot.hasGroup("hand"))
-    for (const int index : robot.group("hand")) hand.push_back(robot.activeJoints()[static_cast<std::size_t>(index)].name);
+    for (const int index : robot.group("hand"))
+      hand.push_back(robot.activeJoints()[static_cast<std::size_t>(index)].name);
   for (const MimicRelation& relation : mimicRelations(robot))
     mimic[relation.joint] = Json::array({relation.source, relation.multiplier, relation.offset});
   const int palm = robot.palmLink();
@@ -164,8 +169,8 @@ std::vector<std::string> pathEndWarnings(const Task& task, const std::vector<Con
   const auto check = [&](const Configuration& q, const Configuration& expected, const char* end, const char* what) {
     const double off = (q - expected).cwiseAbs().maxCoeff();
     if (off > kEndTolerance)
-      warnings.push_back(std::string("the path's ") + end + " is not task " + task.name + "'s " + what + " (a joint differs by " +
-                         std::to_string(off * 180.0 / M_PI) + " deg)");
+      warnings.push_back(std::string("the path's ") + end + " is not task " + task.name + "'s " + what +
+                         " (a joint differs by " + std::to_string(off * 180.0 / M_PI) + " deg)");
   };
   check(points.front(), task.start, "first point", "start");
   check(points.back(), task.goal, "last point", "goal");
@@ -222,8 +227,8 @@ ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesys
   return result;
 }
 
-ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies, const ViewerSources& sources,
-                      const ViewerDataParameters& parameters) {
+ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies,
+                      const ViewerSources& sources, const ViewerDataParameters& parameters) {
   const RobotModel& robot = *task.robot;
   ViewerPath shown = viewerPath(task, path, sources.pathFile, parameters);
   const std::vector<int> slots =
@@ -241,7 +246,8 @@ ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel
   document["robot"] = robotJson(robot, data.files);
   document["path"] = std::move(shown.json);
   document["warnings"] = std::move(shown.warnings);
-  document["synergies"] = synergies ? synergiesJson(*synergies, slots, shown.timeline, parameters.plannerDirections) : Json();
+  document["synergies"] =
+      synergies ? synergiesJson(*synergies, slots, shown.timeline, parameters.plannerDirections) : Json();
   return data;
 }
 

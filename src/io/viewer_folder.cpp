@@ -19,20 +19,23 @@ bool holdsAssets(const std::filesystem::path& directory) {
 }  // namespace
 
 const std::vector<std::string>& viewerAssetFiles() {
-  static const std::vector<std::string> files{"index.html", "viewer.css", "pmdplan-viewer.js", "THIRD_PARTY_NOTICES.txt"};
+  static const std::vector<std::string> files{"index.html", "viewer.css", "pmdplan-viewer.js",
+                                              "THIRD_PARTY_NOTICES.txt"};
   return files;
 }
 
 std::filesystem::path viewerAssetDirectory() {
   if (const char* env = std::getenv("PMDPLAN_VIEWER_DIR"); env && *env) {
     if (!holdsAssets(env))
-      throw std::runtime_error(std::string("PMDPLAN_VIEWER_DIR=") + env + " does not hold the built viewer (index.html, pmdplan-viewer.js, ...)");
+      throw std::runtime_error(std::string("PMDPLAN_VIEWER_DIR=") + env +
+                               " does not hold the built viewer (index.html, pmdplan-viewer.js, ...)");
     return env;
   }
   const std::filesystem::path data = dataDirectory();
   for (const auto& candidate : {data.parent_path() / "viewer" / "dist", data.parent_path() / "viewer"})
     if (holdsAssets(candidate)) return candidate;
-  throw std::runtime_error("the built web viewer is missing (looked in " + (data.parent_path() / "viewer" / "dist").string() +
+  throw std::runtime_error("the built web viewer is missing (looked in " +
+                           (data.parent_path() / "viewer" / "dist").string() +
                            "); build it with: npm --prefix viewer ci && npm --prefix viewer run build");
 }
 

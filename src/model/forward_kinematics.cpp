@@ -18,7 +18,8 @@ std::vector<double> ForwardKinematics::jointValues(const Configuration& q) const
     if (joints[i].activeIndex >= 0) values[i] = q[joints[i].activeIndex];
   for (std::size_t i = 0; i < joints.size(); ++i)
     if (joints[i].mimicSource >= 0)
-      values[i] = joints[i].mimicMultiplier * values[static_cast<std::size_t>(joints[i].mimicSource)] + joints[i].mimicOffset;
+      values[i] =
+          joints[i].mimicMultiplier * values[static_cast<std::size_t>(joints[i].mimicSource)] + joints[i].mimicOffset;
   return values;
 }
 
@@ -38,10 +39,15 @@ void ForwardKinematics::linkPoses(const Configuration& q, LinkPoses& out) const 
     Eigen::Isometry3d t = out[static_cast<std::size_t>(joint.parentLink)] * joint.origin;
     const double v = values[static_cast<std::size_t>(j)];
     switch (joint.type) {
-      case JointType::Fixed: break;
+      case JointType::Fixed:
+        break;
       case JointType::Revolute:
-      case JointType::Continuous: t.rotate(Eigen::AngleAxisd(v, joint.axis)); break;
-      case JointType::Prismatic: t.translate(v * joint.axis); break;
+      case JointType::Continuous:
+        t.rotate(Eigen::AngleAxisd(v, joint.axis));
+        break;
+      case JointType::Prismatic:
+        t.translate(v * joint.axis);
+        break;
     }
     out[static_cast<std::size_t>(joint.childLink)] = t;
   }

@@ -13,9 +13,14 @@ namespace {
 void freeze(Joint& joint, double value) {
   switch (joint.type) {
     case JointType::Revolute:
-    case JointType::Continuous: joint.origin.rotate(Eigen::AngleAxisd(value, joint.axis)); break;
-    case JointType::Prismatic: joint.origin.translate(value * joint.axis); break;
-    case JointType::Fixed: break;
+    case JointType::Continuous:
+      joint.origin.rotate(Eigen::AngleAxisd(value, joint.axis));
+      break;
+    case JointType::Prismatic:
+      joint.origin.translate(value * joint.axis);
+      break;
+    case JointType::Fixed:
+      break;
   }
   joint.type = JointType::Fixed;
   joint.mimicSource = -1;

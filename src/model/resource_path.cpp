@@ -38,7 +38,8 @@ std::filesystem::path resolvePackage(const std::string& reference, const std::fi
   }
   throw InputError(referencingFile.string(), field,
                    "'" + reference + "': no package '" + package + "' in the package search path " + searchPath.text() +
-                       "; add the directory that holds " + package + "/ with --package-path DIR[:DIR] or "
+                       "; add the directory that holds " + package +
+                       "/ with --package-path DIR[:DIR] or "
                        "PMDPLAN_PACKAGE_PATH=DIR[:DIR]");
 }
 
@@ -84,14 +85,17 @@ std::filesystem::path resolveResourcePath(const std::string& reference, const st
   if (reference.empty()) throw InputError(referencingFile.string(), field, "expected a file path, got an empty string");
   if (startsWith(reference, kPackagePrefix)) return resolvePackage(reference, referencingFile, field);
   if (!startsWith(reference, kFilePrefix) && reference.find("://") != std::string::npos)
-    throw InputError(referencingFile.string(), field,
-                     "'" + reference + "' is not a URI this reads: expected package://NAME/path, file:///path or a file path");
-  std::filesystem::path path = startsWith(reference, kFilePrefix) ? reference.substr(std::string(kFilePrefix).size()) : reference;
+    throw InputError(
+        referencingFile.string(), field,
+        "'" + reference + "' is not a URI this reads: expected package://NAME/path, file:///path or a file path");
+  std::filesystem::path path =
+      startsWith(reference, kFilePrefix) ? reference.substr(std::string(kFilePrefix).size()) : reference;
   if (path.is_relative()) path = std::filesystem::absolute(referencingFile).parent_path() / path;
   path = path.lexically_normal();
   std::error_code error;
   if (!std::filesystem::exists(path, error))
-    throw InputError(referencingFile.string(), field, "'" + reference + "' is " + path.string() + ", which does not exist");
+    throw InputError(referencingFile.string(), field,
+                     "'" + reference + "' is " + path.string() + ", which does not exist");
   return path;
 }
 

@@ -68,9 +68,10 @@ bool RobotModel::hasGroup(const std::string& groupName) const {
 const std::vector<int>& RobotModel::group(const std::string& groupName) const {
   for (const auto& [name, indices] : groups_)
     if (name == groupName) return indices;
-  throw InputError(urdfPath_.string(), "group", "robot '" + name_ + "' has no planning group '" + groupName +
-                                                   "' (write the SRDF with `pmdplan robot init " + urdfPath_.string() +
-                                                   " --arm J1,J2,... --palm LINK`)");
+  throw InputError(urdfPath_.string(), "group",
+                   "robot '" + name_ + "' has no planning group '" + groupName +
+                       "' (write the SRDF with `pmdplan robot init " + urdfPath_.string() +
+                       " --arm J1,J2,... --palm LINK`)");
 }
 
 bool RobotModel::isCollisionPairDisabled(int linkA, int linkB) const {

@@ -33,8 +33,9 @@ std::string unmatchedSrdfName(const SrdfNameMatch& match, const std::string& kin
     for (const auto& name : match.candidates) names += (names.empty() ? "" : ", ") + name;
     return text + " (the URDF has " + names + ": write the one meant in the SRDF)";
   }
-  return text + " (not in the URDF; write an SRDF for this URDF with `pmdplan robot init URDF --arm J1,J2,... "
-                "--palm LINK`)";
+  return text +
+         " (not in the URDF; write an SRDF for this URDF with `pmdplan robot init URDF --arm J1,J2,... "
+         "--palm LINK`)";
 }
 
 }  // namespace pmdplan

@@ -54,8 +54,9 @@ void checkTree(const urdf::ModelInterface& model, const std::string& file) {
       failTree(model, file, field, "its parent and child are the same link '" + joint->child_link_name + "'");
     const auto [previous, inserted] = parentJoint.emplace(joint->child_link_name, name);
     if (!inserted)
-      failTree(model, file, field, "link '" + joint->child_link_name + "' already has the parent joint '" + previous->second +
-                                        "'; a URDF is a tree: one parent per link, no kinematic loops");
+      failTree(model, file, field,
+               "link '" + joint->child_link_name + "' already has the parent joint '" + previous->second +
+                   "'; a URDF is a tree: one parent per link, no kinematic loops");
   }
   // Every link must be reached from the root by following child joints (a loop detached from the
   // root has a parent everywhere and would otherwise be dropped silently).
@@ -71,11 +72,12 @@ void checkTree(const urdf::ModelInterface& model, const std::string& file) {
   }
   for (const auto& [name, link] : model.links_)
     if (!reached.count(name))
-      failTree(model, file, "link[" + name + "]", "not connected to the root link '" + root->name +
-                                                       "' (a kinematic loop or a second tree)");
+      failTree(model, file, "link[" + name + "]",
+               "not connected to the root link '" + root->name + "' (a kinematic loop or a second tree)");
 }
 
-void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::ModelInterface& model, const std::string& file) {
+void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::ModelInterface& model,
+                            const std::string& file) {
   const tinyxml2::XMLElement* root = document.RootElement();
   for (const auto* e = root ? root->FirstChildElement("link") : nullptr; e; e = e->NextSiblingElement("link")) {
     const char* name = e->Attribute("name");
@@ -109,15 +111,16 @@ void checkGeometry(const urdf::Geometry& geometry, const std::string& file, cons
       const auto& m = static_cast<const urdf::Mesh&>(geometry);
       for (const double s : {m.scale.x, m.scale.y, m.scale.z})
         if (!(std::isfinite(s) && s != 0.0))
-          throw InputError(file, field + ".mesh.scale", "each scale factor must be a finite number other than 0, got " + shown(s));
+          throw InputError(file, field + ".mesh.scale",
+                           "each scale factor must be a finite number other than 0, got " + shown(s));
       break;
     }
   }
 }
 
 void checkPose(const urdf::Pose& pose, const std::string& file, const std::string& field) {
-  const double values[] = {pose.position.x, pose.position.y, pose.position.z,
-                           pose.rotation.x, pose.rotation.y, pose.rotation.z, pose.rotation.w};
+  const double values[] = {pose.position.x, pose.position.y, pose.position.z, pose.rotation.x,
+                           pose.rotation.y, pose.rotation.z, pose.rotation.w};
   for (const double v : values)
     if (!std::isfinite(v)) throw InputError(file, field + ".origin", "xyz and rpy must be finite numbers");
 }

@@ -3,10 +3,10 @@
 // parent per link, no joint from a link to itself, every link reachable from the root) and finite,
 // positive geometry — so that no file can make the reader recurse without end or build a shape
 // that never collides. Each check throws InputError naming the file and the link or joint.
-#include <string>
-
 #include <tinyxml2.h>
 #include <urdf_model/model.h>
+
+#include <string>
 
 namespace pmdplan::urdf_checks {
 
@@ -21,7 +21,8 @@ void checkTree(const urdf::ModelInterface& model, const std::string& file);
 
 /// Every <collision> element of the document was read: urdfdom drops one whose numbers it cannot
 /// parse ("nan", "inf", 1e400) without a word, which would leave a link that never collides.
-void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::ModelInterface& model, const std::string& file);
+void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::ModelInterface& model,
+                            const std::string& file);
 
 /// Finite, positive sizes of a primitive; finite, non-zero mesh scales.
 void checkGeometry(const urdf::Geometry& geometry, const std::string& file, const std::string& field);

@@ -27,7 +27,7 @@ constexpr double kMaxJointMagnitude = 1000.0;
 /// urdfdom reports problems through console_bridge; keep the first error to put in our message
 /// instead of letting it print to the terminal.
 class CapturedUrdfErrors : public console_bridge::OutputHandler {
-public:
+ public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
     if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first.empty()) first = text;
   }
@@ -38,7 +38,8 @@ Eigen::Isometry3d toIsometry(const urdf::Pose& pose) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
   t.linear() = Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
-                   .normalized().toRotationMatrix();
+                   .normalized()
+                   .toRotationMatrix();
   return t;
 }
 
@@ -57,7 +58,8 @@ std::optional<Shape> toShape(const urdf::Geometry& geometry, const std::filesyst
       return SphereShape{static_cast<const urdf::Sphere&>(geometry).radius};
     case urdf::Geometry::MESH: {
       const auto& m = static_cast<const urdf::Mesh&>(geometry);
-      return loadMeshShape(resolveResourcePath(m.filename, urdf, field + ".mesh.filename"), Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z));
+      return loadMeshShape(resolveResourcePath(m.filename, urdf, field + ".mesh.filename"),
+                           Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z));
     }
   }
   return std::nullopt;
@@ -114,7 +116,9 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
     parsed = urdf::parseURDF(xml);
     console_bridge::restorePreviousOutputHandler();
     if (!parsed)
-      throw InputError(file, "robot", "not a valid URDF: " + (errors.first.empty() ? std::string("urdfdom rejected it") : errors.first));
+      throw InputError(
+          file, "robot",
+          "not a valid URDF: " + (errors.first.empty() ? std::string("urdfdom rejected it") : errors.first));
   }
   model.name_ = parsed->getName();
   urdf_checks::checkTree(*parsed, file);
@@ -161,27 +165,41 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
       const std::string field = "joint[" + joint->name + "]";
       urdf_checks::checkPose(joint->parent_to_joint_origin_transform, file, field);
       switch (joint->type) {
-        case urdf::Joint::FIXED: j.type = JointType::Fixed; break;
-        case urdf::Joint::REVOLUTE: j.type = JointType::Revolute; break;
-        case urdf::Joint::CONTINUOUS: j.type = JointType::Continuous; break;
-        case urdf::Joint::PRISMATIC: j.type = JointType::Prismatic; break;
-        default: throw InputError(file, field, "joint type not supported (expected fixed, revolute, continuous or prismatic)");
+        case urdf::Joint::FIXED:
+          j.type = JointType::Fixed;
+          break;
+        case urdf::Joint::REVOLUTE:
+          j.type = JointType::Revolute;
+          break;
+        case urdf::Joint::CONTINUOUS:
+          j.type = JointType::Continuous;
+          break;
+        case urdf::Joint::PRISMATIC:
+          j.type = JointType::Prismatic;
+          break;
+        default:
+          throw InputError(file, field, "joint type not supported (expected fixed, revolute, continuous or prismatic)");
       }
       if (j.type != JointType::Fixed) {
-        if (!(axis.norm() > 1e-12) || !axis.allFinite()) throw InputError(file, field + ".axis", "axis must be a non-zero vector");
+        if (!(axis.norm() > 1e-12) || !axis.allFinite())
+          throw InputError(file, field + ".axis", "axis must be a non-zero vector");
         j.axis = axis.normalized();
         if (j.type == JointType::Continuous && !hasLimitRange(joint->limits)) {
           // No range given: one turn, without wrap-around (see docs/bring_your_own_robot.md).
           j.lower = -M_PI;
           j.upper = M_PI;
         } else {
-          if (!joint->limits) throw InputError(file, field + ".limit", "revolute and prismatic joints need <limit lower upper>");
+          if (!joint->limits)
+            throw InputError(file, field + ".limit", "revolute and prismatic joints need <limit lower upper>");
           j.lower = joint->limits->lower;
           j.upper = joint->limits->upper;
-          j.velocity = std::isfinite(joint->limits->velocity) && joint->limits->velocity > 0.0 ? joint->limits->velocity : 0.0;
-          if (!(std::abs(j.lower) <= kMaxJointMagnitude) || !(std::abs(j.upper) <= kMaxJointMagnitude) || !(j.lower < j.upper))
-            throw InputError(file, field + ".limit", "expected lower < upper within +-1000 (rad or m), got " + std::to_string(j.lower) +
-                                                         " .. " + std::to_string(j.upper));
+          j.velocity =
+              std::isfinite(joint->limits->velocity) && joint->limits->velocity > 0.0 ? joint->limits->velocity : 0.0;
+          if (!(std::abs(j.lower) <= kMaxJointMagnitude) || !(std::abs(j.upper) <= kMaxJointMagnitude) ||
+              !(j.lower < j.upper))
+            throw InputError(file, field + ".limit",
+                             "expected lower < upper within +-1000 (rad or m), got " + std::to_string(j.lower) +
+                                 " .. " + std::to_string(j.upper));
         }
       }
       const int jointIdx = static_cast<int>(model.joints_.size());
@@ -221,7 +239,8 @@ void RobotModelBuilder::resolveMimics(RobotModel& model) {
     while (model.joints_[static_cast<std::size_t>(current)].mimicSource >= 0) {
       current = model.joints_[static_cast<std::size_t>(current)].mimicSource;
       if (++steps > model.joints_.size())
-        throw InputError(file, "joint[" + start.name + "].mimic", "mimic cycle: the chain of mimicked joints never reaches an independent joint");
+        throw InputError(file, "joint[" + start.name + "].mimic",
+                         "mimic cycle: the chain of mimicked joints never reaches an independent joint");
     }
   }
   // Flatten chains (a mimics b mimics c) so every mimic refers to an independent joint.
@@ -240,7 +259,8 @@ void RobotModelBuilder::readSrdf(RobotModel& model, const std::filesystem::path&
   const std::string xml = readTextFile(srdf);
   tinyxml2::XMLDocument document;
   if (document.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS)
-    throw InputError(file, "line " + std::to_string(document.ErrorLineNum()), std::string("malformed XML: ") + document.ErrorStr());
+    throw InputError(file, "line " + std::to_string(document.ErrorLineNum()),
+                     std::string("malformed XML: ") + document.ErrorStr());
   const auto* root = document.RootElement();
   if (!root || std::string(root->Name()) != "robot") throw InputError(file, "root element", "expected <robot>");
   const auto line = [](const tinyxml2::XMLElement* e) { return "line " + std::to_string(e->GetLineNum()); };
@@ -260,7 +280,8 @@ void RobotModelBuilder::readSrdf(RobotModel& model, const std::filesystem::path&
     const std::string where = std::string("group '") + name + "': ";
     std::vector<int> jointIndices;  // joints(), converted to active indices once the order is known
     const auto add = [&](int joint) {
-      if (std::find(jointIndices.begin(), jointIndices.end(), joint) == jointIndices.end()) jointIndices.push_back(joint);
+      if (std::find(jointIndices.begin(), jointIndices.end(), joint) == jointIndices.end())
+        jointIndices.push_back(joint);
     };
     // MoveIt's members, in document order: joints, links (their parent joints), chains, subgroups.
     for (const auto* member = group->FirstChildElement(); member; member = member->NextSiblingElement()) {
@@ -271,13 +292,16 @@ void RobotModelBuilder::readSrdf(RobotModel& model, const std::filesystem::path&
         const int link = matched(linkNames, "link", member->Attribute("name"), member, where);
         if (const int joint = model.links_[static_cast<std::size_t>(link)].parentJoint; joint >= 0) add(joint);
       } else if (kind == "chain") {
-        const int base = matched(linkNames, "link", member->Attribute("base_link"), member, where + "chain base_link: ");
+        const int base =
+            matched(linkNames, "link", member->Attribute("base_link"), member, where + "chain base_link: ");
         const int tip = matched(linkNames, "link", member->Attribute("tip_link"), member, where + "chain tip_link: ");
         std::vector<int> chain;
-        for (int link = tip; link != base; ) {
+        for (int link = tip; link != base;) {
           const int joint = model.links_[static_cast<std::size_t>(link)].parentJoint;
-          if (joint < 0) throw InputError(file, line(member), where + "chain: link '" + linkNames[static_cast<std::size_t>(base)] +
-                                                                   "' is not an ancestor of '" + linkNames[static_cast<std::size_t>(tip)] + "'");
+          if (joint < 0)
+            throw InputError(file, line(member),
+                             where + "chain: link '" + linkNames[static_cast<std::size_t>(base)] +
+                                 "' is not an ancestor of '" + linkNames[static_cast<std::size_t>(tip)] + "'");
           chain.push_back(joint);
           link = model.joints_[static_cast<std::size_t>(joint)].parentLink;
         }
@@ -296,7 +320,8 @@ void RobotModelBuilder::readSrdf(RobotModel& model, const std::filesystem::path&
     model.groups_.emplace_back(name, std::move(jointIndices));
     model.groupDefinitions_.emplace_back(name, std::move(memberNames));
   }
-  for (const auto* d = root->FirstChildElement("disable_collisions"); d; d = d->NextSiblingElement("disable_collisions")) {
+  for (const auto* d = root->FirstChildElement("disable_collisions"); d;
+       d = d->NextSiblingElement("disable_collisions")) {
     const int ia = matched(linkNames, "link", d->Attribute("link1"), d, "disable_collisions link1: ");
     const int ib = matched(linkNames, "link", d->Attribute("link2"), d, "disable_collisions link2: ");
     model.disabledPairs_.emplace_back(std::min(ia, ib), std::max(ia, ib));
@@ -320,7 +345,8 @@ void RobotModelBuilder::readSrdf(RobotModel& model, const std::filesystem::path&
     alias("arm", "parent_group");
   }
   std::sort(model.disabledPairs_.begin(), model.disabledPairs_.end());
-  model.disabledPairs_.erase(std::unique(model.disabledPairs_.begin(), model.disabledPairs_.end()), model.disabledPairs_.end());
+  model.disabledPairs_.erase(std::unique(model.disabledPairs_.begin(), model.disabledPairs_.end()),
+                             model.disabledPairs_.end());
 }
 
 void RobotModelBuilder::reassignActiveOrder(RobotModel& model) {
@@ -354,7 +380,8 @@ void RobotModelBuilder::assignActiveOrder(RobotModel& model) {
   }
   if (model.palmLink_ < 0)
     for (const auto& [name, joints] : model.groups_)
-      if (name == "hand" && !joints.empty()) model.palmLink_ = model.joints_[static_cast<std::size_t>(joints.front())].parentLink;
+      if (name == "hand" && !joints.empty())
+        model.palmLink_ = model.joints_[static_cast<std::size_t>(joints.front())].parentLink;
   // Groups hold active indices (mimic and fixed joints named in a group are dropped).
   for (auto& [name, joints] : model.groups_) {
     std::vector<int> active;

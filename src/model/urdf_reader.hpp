@@ -8,12 +8,12 @@
 namespace pmdplan {
 
 class RobotModelBuilder {
-public:
+ public:
   static RobotModel build(const std::filesystem::path& urdf, const std::optional<std::filesystem::path>& srdf);
   /// The configuration layout and the groups' active indices again, after joints became fixed.
   static void reassignActiveOrder(RobotModel& model);
 
-private:
+ private:
   static void readUrdf(RobotModel& model, const std::filesystem::path& urdf);
   static void resolveMimics(RobotModel& model);
   static void readSrdf(RobotModel& model, const std::filesystem::path& srdf);

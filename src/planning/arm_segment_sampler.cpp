@@ -5,8 +5,7 @@
 
 namespace pmdplan {
 
-ArmSegmentSampler::ArmSegmentSampler(const PlanningSpace& space, const Configuration& start,
-                                     const Configuration& goal)
+ArmSegmentSampler::ArmSegmentSampler(const PlanningSpace& space, const Configuration& start, const Configuration& goal)
     : armIndices_(space.armIndices) {
   const auto n = static_cast<Eigen::Index>(armIndices_.size());
   startUnit_.resize(n);

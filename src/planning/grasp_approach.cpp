@@ -21,7 +21,8 @@ std::string closingProblem(const Task& task, ExactCollisionChecker& checker, con
                            const GraspContactRule& rule, const Configuration& pregrasp) {
   const CollisionReport atPregrasp = checker.check(pregrasp);
   if (!atPregrasp.free()) return "it is in collision: " + pairsText(atPregrasp);
-  const auto closing = segments.inspect([&](const Configuration& q) { return rule.forbidden(checker.check(q)); }, pregrasp, task.goal);
+  const auto closing =
+      segments.inspect([&](const Configuration& q) { return rule.forbidden(checker.check(q)); }, pregrasp, task.goal);
   if (!closing.free) {
     char where[64];
     std::snprintf(where, sizeof where, "closing onto the goal collides at %.1f %%: ", 100.0 * *closing.firstCollision);
@@ -56,7 +57,8 @@ std::optional<GraspApproach> graspApproach(const Task& task, ExactCollisionCheck
   const std::string file = task.file.string();
   if (task.pregrasp) {
     const std::string problem = closingProblem(task, checker, segments, rule, *task.pregrasp);
-    if (!problem.empty()) throw InputError(file, "pregrasp", "the pre-grasp cannot start the closing onto the goal: " + problem);
+    if (!problem.empty())
+      throw InputError(file, "pregrasp", "the pre-grasp cannot start the closing onto the goal: " + problem);
     return GraspApproach{*task.pregrasp, false, 0.0, checker.clearance(*task.pregrasp, rule.target())->metres};
   }
   const Configuration open = openHand(*task.robot, task.goal);
@@ -69,8 +71,9 @@ std::optional<GraspApproach> graspApproach(const Task& task, ExactCollisionCheck
     if (closingProblem(task, checker, segments, rule, q).empty()) return GraspApproach{q, true, t, clearance};
   }
   throw InputError(file, "goal",
-                   "the goal grasps the target '" + rule.target() + "', but no opening of its hand clears the target by " +
-                       millimetres(settings.clearance) + " and closes onto the goal without other contact; give a pre-grasp " +
+                   "the goal grasps the target '" + rule.target() +
+                       "', but no opening of its hand clears the target by " + millimetres(settings.clearance) +
+                       " and closes onto the goal without other contact; give a pre-grasp " +
                        "(pregrasp: {joints_deg: {...}}) in the task file");
 }
 

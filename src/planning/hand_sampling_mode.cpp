@@ -6,9 +6,7 @@
 
 namespace pmdplan {
 
-std::string handSamplingModeName(HandSamplingMode mode) {
-  return mode == HandSamplingMode::Synergy ? "pmd" : "full";
-}
+std::string handSamplingModeName(HandSamplingMode mode) { return mode == HandSamplingMode::Synergy ? "pmd" : "full"; }
 
 std::optional<HandSamplingMode> parseHandSamplingMode(const std::string& name) {
   if (name == "pmd") return HandSamplingMode::Synergy;
@@ -17,8 +15,7 @@ std::optional<HandSamplingMode> parseHandSamplingMode(const std::string& name) {
 }
 
 std::unique_ptr<HandSampler> makeHandSampler(HandSamplingMode mode, const PlanningSpace& space,
-                                             const SynergyModel* model,
-                                             const SynergySamplingParameters& parameters) {
+                                             const SynergyModel* model, const SynergySamplingParameters& parameters) {
   if (mode == HandSamplingMode::FullSpace) return std::make_unique<FullSpaceHandSampler>(space);
   if (model == nullptr) throw std::invalid_argument("makeHandSampler: the PMD planner needs a synergy model");
   return std::make_unique<SynergyHandSampler>(space, *model, parameters);

@@ -43,8 +43,8 @@ std::vector<std::size_t> shortestPath(const std::vector<std::vector<double>>& le
 
 }  // namespace
 
-std::vector<std::size_t> shortcutPathIndices(const std::vector<Configuration>& path,
-                                             const PlanningSpace& space, MotionValidator& motionValidator) {
+std::vector<std::size_t> shortcutPathIndices(const std::vector<Configuration>& path, const PlanningSpace& space,
+                                             MotionValidator& motionValidator) {
   const std::size_t n = path.size();
   if (n <= 2) {
     std::vector<std::size_t> all(n);

@@ -27,7 +27,8 @@ unsigned long long parseWhole(const std::string& flag, const std::string& text) 
   unsigned long long value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || error != std::errc{} || end != text.data() + text.size())
-    reject(flag, text, "a whole number >= 0 (at most " + std::to_string(std::numeric_limits<unsigned long long>::max()) + ")");
+    reject(flag, text,
+           "a whole number >= 0 (at most " + std::to_string(std::numeric_limits<unsigned long long>::max()) + ")");
   return value;
 }
 
@@ -49,35 +50,50 @@ Whole narrow(const std::string& flag, const std::string& text, unsigned long lon
 /// A setting held in the field `access` reaches (a generic lambda, so const and not).
 template <typename Field, typename Access>
 PlannerSetting setting(std::string flag, std::string symbol, std::string help, Access access) {
-  PlannerSetting s{flag, std::move(symbol), std::move(help), std::is_floating_point_v<Field> ? "NUMBER" : "COUNT", {}, {}};
+  PlannerSetting s{flag, std::move(symbol), std::move(help), std::is_floating_point_v<Field> ? "NUMBER" : "COUNT", {},
+                   {}};
   if constexpr (std::is_floating_point_v<Field>) {
     s.set = [flag, access](PlannerParameters& p, const std::string& text) { access(p) = parseNumber(flag, text); };
     s.get = [access](const PlannerParameters& p) { return numberText(access(p)); };
   } else {
-    s.set = [flag, access](PlannerParameters& p, const std::string& text) { access(p) = narrow<Field>(flag, text, parseWhole(flag, text)); };
+    s.set = [flag, access](PlannerParameters& p, const std::string& text) {
+      access(p) = narrow<Field>(flag, text, parseWhole(flag, text));
+    };
     s.get = [access](const PlannerParameters& p) { return std::to_string(access(p)); };
   }
   return s;
 }
 
 PlannerSetting growthSetting() {
-  PlannerSetting s{"rho-a-growth", "", "how rho_a grows per sweep: factorial (rho_a = k·rho_a, Algorithm 4) or linear (k·rho_a(1))",
-                   "factorial|linear", {}, {}};
+  PlannerSetting s{"rho-a-growth",
+                   "",
+                   "how rho_a grows per sweep: factorial (rho_a = k·rho_a, Algorithm 4) or linear (k·rho_a(1))",
+                   "factorial|linear",
+                   {},
+                   {}};
   s.set = [](PlannerParameters& p, const std::string& text) {
-    if (text == "factorial") p.armBoxGrowth = ArmBoxGrowth::Factorial;
-    else if (text == "linear") p.armBoxGrowth = ArmBoxGrowth::Linear;
-    else reject("rho-a-growth", text, "a growth rule; expected factorial or linear");
+    if (text == "factorial")
+      p.armBoxGrowth = ArmBoxGrowth::Factorial;
+    else if (text == "linear")
+      p.armBoxGrowth = ArmBoxGrowth::Linear;
+    else
+      reject("rho-a-growth", text, "a growth rule; expected factorial or linear");
   };
-  s.get = [](const PlannerParameters& p) { return std::string(p.armBoxGrowth == ArmBoxGrowth::Factorial ? "factorial" : "linear"); };
+  s.get = [](const PlannerParameters& p) {
+    return std::string(p.armBoxGrowth == ArmBoxGrowth::Factorial ? "factorial" : "linear");
+  };
   return s;
 }
 
 PlannerSetting smoothingSetting() {
   PlannerSetting s{"smooth", "", "smooth the path as in Sect. 5.3", "on|off", {}, {}};
   s.set = [](PlannerParameters& p, const std::string& text) {
-    if (text == "on") p.smooth = true;
-    else if (text == "off") p.smooth = false;
-    else reject("smooth", text, "on or off");
+    if (text == "on")
+      p.smooth = true;
+    else if (text == "off")
+      p.smooth = false;
+    else
+      reject("smooth", text, "on or off");
   };
   s.get = [](const PlannerParameters& p) { return std::string(p.smooth ? "on" : "off"); };
   return s;
@@ -87,35 +103,47 @@ PlannerSetting smoothingSetting() {
 
 const std::vector<PlannerSetting>& plannerSettingTable() {
   static const std::vector<PlannerSetting> table = {
-      setting<double>("rho-a", "rho_a", "initial half-size of the arm hypercubes, normalised arm-joint units",
-                      [](auto& p) -> auto& { return p.initialArmHalfSize; }),
+      setting<double>(
+          "rho-a", "rho_a", "initial half-size of the arm hypercubes, normalised arm-joint units",
+          [](auto& p) -> auto& { return p.initialArmHalfSize; }),
       growthSetting(),
-      setting<std::size_t>("neighbours", "K", "most neighbours a new sample is connected to",
-                           [](auto& p) -> auto& { return p.neighbourCount; }),
-      setting<double>("neighbour-threshold", "", "neighbour radius as a multiple of d(c_ini, c_goal) (Sect. 5.2: 1)",
-                      [](auto& p) -> auto& { return p.neighbourThresholdFactor; }),
-      setting<int>("arm-trials", "n_A", "arm configurations tried per hypercube", [](auto& p) -> auto& { return p.armTrials; }),
-      setting<int>("hand-trials", "n_H", "hand configurations tried per arm configuration",
-                   [](auto& p) -> auto& { return p.handTrials; }),
-      setting<std::size_t>("max-samples", "N", "the run fails after this many samples (hand-arm draws)",
-                           [](auto& p) -> auto& { return p.maxSamples; }),
-      setting<std::size_t>("sweep-visits", "", "hypercube visits per sweep before rho_a grows, at least (1: the paper's one pass)",
-                           [](auto& p) -> auto& { return p.minSweepVisits; }),
-      setting<double>("kappa", "kappa", "half-width of the PMD hand box along PMD i, in standard deviations sigma_i",
-                      [](auto& p) -> auto& { return p.pmdBox.kappa; }),
-      setting<int>("max-pmds", "", "most PMDs the hand dimension grows to (with the thumb base)",
-                   [](auto& p) -> auto& { return p.pmdBox.maxDirections; }),
+      setting<std::size_t>(
+          "neighbours", "K", "most neighbours a new sample is connected to",
+          [](auto& p) -> auto& { return p.neighbourCount; }),
+      setting<double>(
+          "neighbour-threshold", "", "neighbour radius as a multiple of d(c_ini, c_goal) (Sect. 5.2: 1)",
+          [](auto& p) -> auto& { return p.neighbourThresholdFactor; }),
+      setting<int>(
+          "arm-trials", "n_A", "arm configurations tried per hypercube", [](auto& p) -> auto& { return p.armTrials; }),
+      setting<int>(
+          "hand-trials", "n_H", "hand configurations tried per arm configuration",
+          [](auto& p) -> auto& { return p.handTrials; }),
+      setting<std::size_t>(
+          "max-samples", "N", "the run fails after this many samples (hand-arm draws)",
+          [](auto& p) -> auto& { return p.maxSamples; }),
+      setting<std::size_t>(
+          "sweep-visits", "", "hypercube visits per sweep before rho_a grows, at least (1: the paper's one pass)",
+          [](auto& p) -> auto& { return p.minSweepVisits; }),
+      setting<double>(
+          "kappa", "kappa", "half-width of the PMD hand box along PMD i, in standard deviations sigma_i",
+          [](auto& p) -> auto& { return p.pmdBox.kappa; }),
+      setting<int>(
+          "max-pmds", "", "most PMDs the hand dimension grows to (with the thumb base)",
+          [](auto& p) -> auto& { return p.pmdBox.maxDirections; }),
       smoothingSetting(),
-      setting<double>("time-limit", "", "wall-clock limit of the roadmap construction in seconds (inf: none)",
-                      [](auto& p) -> auto& { return p.timeLimit; }),
-      setting<std::uint64_t>("seed", "", "random seed", [](auto& p) -> auto& { return p.seed; }),
+      setting<double>(
+          "time-limit", "", "wall-clock limit of the roadmap construction in seconds (inf: none)",
+          [](auto& p) -> auto& { return p.timeLimit; }),
+      setting<std::uint64_t>(
+          "seed", "", "random seed", [](auto& p) -> auto& { return p.seed; }),
   };
   return table;
 }
 
 std::string describePlannerSettings(const PlannerParameters& parameters) {
   std::string text;
-  for (const PlannerSetting& s : plannerSettingTable()) text += (text.empty() ? "" : " ") + s.flag + "=" + s.get(parameters);
+  for (const PlannerSetting& s : plannerSettingTable())
+    text += (text.empty() ? "" : " ") + s.flag + "=" + s.get(parameters);
   return text;
 }
 

@@ -41,7 +41,8 @@ void PlanningSpace::check() const {
     if (owner[i] == 0)
       throw std::invalid_argument("planning space: joint '" + joints[i].name +
                                   "' is in neither the arm nor the hand group (add it to a group, or hold it "
-                                  "still with the task's `fixed: {joints_deg: {" + joints[i].name + ": VALUE}}`)");
+                                  "still with the task's `fixed: {joints_deg: {" +
+                                  joints[i].name + ": VALUE}}`)");
 }
 
 Eigen::VectorXd PlanningSpace::normalise(const Configuration& q) const {

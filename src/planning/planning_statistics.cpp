@@ -4,12 +4,18 @@ namespace pmdplan {
 
 std::string plannerStatusName(PlannerStatus status) {
   switch (status) {
-    case PlannerStatus::NotRun: return "not_run";
-    case PlannerStatus::Solved: return "solved";
-    case PlannerStatus::SampleLimit: return "sample_limit";
-    case PlannerStatus::TimeLimit: return "time_limit";
-    case PlannerStatus::InvalidStart: return "invalid_start";
-    case PlannerStatus::InvalidGoal: return "invalid_goal";
+    case PlannerStatus::NotRun:
+      return "not_run";
+    case PlannerStatus::Solved:
+      return "solved";
+    case PlannerStatus::SampleLimit:
+      return "sample_limit";
+    case PlannerStatus::TimeLimit:
+      return "time_limit";
+    case PlannerStatus::InvalidStart:
+      return "invalid_start";
+    case PlannerStatus::InvalidGoal:
+      return "invalid_goal";
   }
   return "unknown";
 }

@@ -34,8 +34,8 @@ void PmdRoadmapPlanner::setup() {
   space_.check();
   for (const auto& [q, which] : {std::pair{&start_, "start"}, std::pair{&goal_, "goal"}}) {
     if (q->size() != space_.dof())
-      throw std::invalid_argument(std::string("PmdRoadmapPlanner: the ") + which + " has " +
-                                  std::to_string(q->size()) + " values, the space " + std::to_string(space_.dof()) +
+      throw std::invalid_argument(std::string("PmdRoadmapPlanner: the ") + which + " has " + std::to_string(q->size()) +
+                                  " values, the space " + std::to_string(space_.dof()) +
                                   " joints (setStartAndGoal first)");
     if (!q->allFinite() || !space_.withinLimits(*q))
       throw std::invalid_argument(std::string("PmdRoadmapPlanner: the ") + which + " is outside the joint limits");
@@ -176,7 +176,8 @@ void PmdRoadmapPlanner::beginRun() {
   began_ = Clock::now();
   deadline_.reset();
   if (std::isfinite(parameters_.timeLimit))
-    deadline_ = began_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(parameters_.timeLimit));
+    deadline_ =
+        began_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(parameters_.timeLimit));
   motionChecksAtStart_ = motionValidator_.statesChecked();
 }
 

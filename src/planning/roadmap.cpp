@@ -10,8 +10,7 @@ namespace pmdplan {
 NodeIndex Roadmap::addNode(RoadmapNode node) {
   if (!nodes_.empty() && node.unit.size() != nodes_.front().unit.size())
     throw std::invalid_argument("Roadmap::addNode: node has " + std::to_string(node.unit.size()) +
-                                " normalised coordinates, the roadmap " +
-                                std::to_string(nodes_.front().unit.size()));
+                                " normalised coordinates, the roadmap " + std::to_string(nodes_.front().unit.size()));
   dimension_ = static_cast<std::size_t>(node.unit.size());
   units_.insert(units_.end(), node.unit.data(), node.unit.data() + node.unit.size());
   smallestStep_.push_back(node.step);

@@ -11,8 +11,8 @@ PlanningSpace planningSpaceFromRobot(const RobotModel& model) {
   if (!model.hasGroup("hand"))
     throw InputError(file, "groups",
                      "the robot has no \"hand\" group; the planner needs a \"hand\" group (and an \"arm\" group "
-                     "unless the robot is a hand alone): write them with `pmdplan robot init " + file +
-                         " --arm J1,J2,... --palm LINK`");
+                     "unless the robot is a hand alone): write them with `pmdplan robot init " +
+                         file + " --arm J1,J2,... --palm LINK`");
   PlanningSpace space;
   space.joints = model.activeJoints();
   if (model.hasGroup("arm")) space.armIndices = model.group("arm");

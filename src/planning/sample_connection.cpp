@@ -11,8 +11,7 @@ using Candidate = std::pair<double, NodeIndex>;  // (distance, node): ordered by
 
 }  // namespace
 
-std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, std::size_t count,
-                                      double threshold) {
+std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, std::size_t count, double threshold) {
   std::vector<Candidate> candidates;
   candidates.reserve(roadmap.nodeCount());
   // One pass over the nodes' coordinates side by side (Roadmap::distance's arithmetic).

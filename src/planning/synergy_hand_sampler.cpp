@@ -42,8 +42,8 @@ SynergyHandSampler::SynergyHandSampler(const PlanningSpace& space, const Synergy
                            "' is missing from the synergy model");
 
   if (model.mean.size() != n)
-    reject("mean", "has " + std::to_string(model.mean.size()) + " entries, expected one per joint (" +
-                       std::to_string(n) + ")");
+    reject("mean",
+           "has " + std::to_string(model.mean.size()) + " entries, expected one per joint (" + std::to_string(n) + ")");
   if (!model.mean.allFinite()) reject("mean", "must hold finite numbers");
   if (model.directions.rows() != n)
     reject("directions", "have " + std::to_string(model.directions.rows()) + " rows, expected one per joint (" +
@@ -53,8 +53,7 @@ SynergyHandSampler::SynergyHandSampler(const PlanningSpace& space, const Synergy
   if (model.sigma.size() != model.directions.cols())
     reject("sigma", "has " + std::to_string(model.sigma.size()) + " entries, expected one per direction (" +
                         std::to_string(model.directions.cols()) + ")");
-  if (!model.sigma.allFinite() || (model.sigma.array() < 0.0).any())
-    reject("sigma", "must hold finite numbers >= 0");
+  if (!model.sigma.allFinite() || (model.sigma.array() < 0.0).any()) reject("sigma", "must hold finite numbers >= 0");
 
   for (const std::string& name : model.ownAxisJoints) {
     const auto at = std::find_if(model.joints.begin(), model.joints.end(),

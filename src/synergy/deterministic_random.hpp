@@ -12,7 +12,7 @@
 namespace pmdplan {
 
 class DeterministicRandom {
-public:
+ public:
   explicit DeterministicRandom(std::uint64_t seed) : engine_(seed) {}
 
   /// Uniform in [0, 1) with 53 random bits.
@@ -36,7 +36,7 @@ public:
   /// Uniform integer in [0, n).
   int below(int n) { return static_cast<int>(uniform() * n); }
 
-private:
+ private:
   std::mt19937_64 engine_;
   double spare_ = 0.0;
   bool hasSpare_ = false;

@@ -19,7 +19,8 @@ using tinyxml2::XMLElement;
 std::string lineOf(const XMLElement* element) { return "line " + std::to_string(element->GetLineNum()); }
 
 /// GraspIt's <DimVals d0=".." d1=".."/>: a missing dN counts as 0, as in GraspIt.
-Eigen::VectorXd readDimVals(const XMLElement* parent, int dimensions, const std::string& file, const std::string& what) {
+Eigen::VectorXd readDimVals(const XMLElement* parent, int dimensions, const std::string& file,
+                            const std::string& what) {
   const XMLElement* values = parent->FirstChildElement("DimVals");
   if (values == nullptr) throw InputError(file, lineOf(parent) + " (" + what + ")", "missing <DimVals d0=\"..\" .../>");
   Eigen::VectorXd vector = Eigen::VectorXd::Zero(dimensions);
@@ -71,7 +72,8 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
   if (static_cast<std::size_t>(dimensions) != dimensionJoints.size())
     throw InputError(file, lineOf(root) + " (dimensions)",
                      "the file has " + std::to_string(dimensions) + " dimensions but " +
-                         std::to_string(dimensionJoints.size()) + " joints were named (--joints names one robot joint per dimension)");
+                         std::to_string(dimensionJoints.size()) +
+                         " joints were named (--joints names one robot joint per dimension)");
 
   // Which hand joint each dimension drives.
   std::vector<int> jointOf(static_cast<std::size_t>(dimensions));
@@ -81,8 +83,9 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
     if (it == handJoints.end()) {
       std::string names;
       for (const auto& joint : handJoints) names += (names.empty() ? "" : ", ") + joint.name;
-      throw InputError("", "joints", "'" + dimensionJoints[d] + "' (dimension " + std::to_string(d) +
-                                         ") is not one of the hand joints " + names);
+      throw InputError(
+          "", "joints",
+          "'" + dimensionJoints[d] + "' (dimension " + std::to_string(d) + ") is not one of the hand joints " + names);
     }
     jointOf[d] = static_cast<int>(it - handJoints.begin());
     for (std::size_t e = 0; e < d; ++e)
@@ -115,7 +118,8 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
   if (const XMLElement* normElement = root->FirstChildElement("NORM")) {
     norm = readDimVals(normElement, dimensions, file, "NORM");
     for (int d = 0; d < dimensions; ++d)
-      if (norm(d) == 0) throw InputError(file, lineOf(normElement) + " (NORM)", "normalisation factor d" + std::to_string(d) + " is 0");
+      if (norm(d) == 0)
+        throw InputError(file, lineOf(normElement) + " (NORM)", "normalisation factor d" + std::to_string(d) + " is 0");
   }
 
   SynergyModel& model = result.model;
@@ -170,12 +174,14 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
     model.varianceFraction(k) = eigenvalueSum > 0 ? grasp.eigenvalue / eigenvalueSum : 0.0;
   }
   if (!defaulted.empty())
-    result.notes.push_back("eigengrasps " + joinNumbers(defaulted) + " have no <EigenValue>: GraspIt's default 0.5 used");
+    result.notes.push_back("eigengrasps " + joinNumbers(defaulted) +
+                           " have no <EigenValue>: GraspIt's default 0.5 used");
   if (!limited.empty())
     result.notes.push_back("amplitude <Limits> of eigengrasps " + joinNumbers(limited) +
                            " ignored: the planner's box half-widths are kappa * sigma");
-  result.notes.push_back("eigengrasps scaled from joint units (rad) to normalised joint units and normalised to unit length; "
-                         "sigma = sqrt(eigenvalue) * scaled length; variance fractions are shares of the file's eigenvalues");
+  result.notes.push_back(
+      "eigengrasps scaled from joint units (rad) to normalised joint units and normalised to unit length; "
+      "sigma = sqrt(eigenvalue) * scaled length; variance fractions are shares of the file's eigenvalues");
 
   double worstCosine = 0;
   for (Eigen::Index a = 0; a < count; ++a)
@@ -189,7 +195,8 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
 
   std::vector<std::string> held;
   for (std::size_t j = 0; j < handJoints.size(); ++j)
-    if (std::find(jointOf.begin(), jointOf.end(), static_cast<int>(j)) == jointOf.end()) held.push_back(handJoints[j].name);
+    if (std::find(jointOf.begin(), jointOf.end(), static_cast<int>(j)) == jointOf.end())
+      held.push_back(handJoints[j].name);
   if (!held.empty()) {
     std::string names;
     for (const auto& name : held) names += (names.empty() ? "" : ", ") + name;
@@ -201,8 +208,8 @@ GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& f
   return result;
 }
 
-GraspItImport importGraspItEigengrasps(const std::filesystem::path& path, const std::vector<std::string>& dimensionJoints,
-                                       const JointLimits& handJoints) {
+GraspItImport importGraspItEigengrasps(const std::filesystem::path& path,
+                                       const std::vector<std::string>& dimensionJoints, const JointLimits& handJoints) {
   return parseGraspItEigengrasps(readTextFile(path), path.string(), dimensionJoints, handJoints);
 }
 

@@ -40,8 +40,7 @@ std::vector<const JointRule*> rulesForJoints(const HandMapping& mapping, const J
   for (std::size_t j = 0; j < rules.size(); ++j)
     if (rules[j] == nullptr)
       throw InputError(mapping.sourceFile, "joints",
-                       "no rule for the robot's hand joint " + handJoints[j].name +
-                           " (give it sensors or a constant)");
+                       "no rule for the robot's hand joint " + handJoints[j].name + " (give it sensors or a constant)");
   return rules;
 }
 

@@ -11,7 +11,7 @@ namespace pmdplan {
 namespace detail {
 
 class PinnedProductBlocking {
-public:
+ public:
   PinnedProductBlocking() : l1_(Eigen::l1CacheSize()), l2_(Eigen::l2CacheSize()), l3_(Eigen::l3CacheSize()) {
     Eigen::setCpuCacheSizes(48 * 1024, 512 * 1024, 8 * 1024 * 1024);
   }
@@ -19,7 +19,7 @@ public:
   PinnedProductBlocking(const PinnedProductBlocking&) = delete;
   PinnedProductBlocking& operator=(const PinnedProductBlocking&) = delete;
 
-private:
+ private:
   std::ptrdiff_t l1_, l2_, l3_;
 };
 

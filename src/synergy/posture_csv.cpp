@@ -46,9 +46,12 @@ Eigen::MatrixXd readPostureCsv(const std::filesystem::path& file, const JointLim
     const auto values = cells(line);
     if (columnJoint.empty()) {
       for (const auto& column : values) {
-        const auto found = std::find_if(hand.begin(), hand.end(), [&](const JointLimit& j) { return j.name == column; });
+        const auto found =
+            std::find_if(hand.begin(), hand.end(), [&](const JointLimit& j) { return j.name == column; });
         if (found == hand.end())
-          throw InputError(name, where, "header column '" + column + "' is not a hand joint; expected a header naming the hand joints: " + jointList(hand));
+          throw InputError(name, where,
+                           "header column '" + column +
+                               "' is not a hand joint; expected a header naming the hand joints: " + jointList(hand));
         const int index = static_cast<int>(found - hand.begin());
         if (std::find(columnJoint.begin(), columnJoint.end(), index) != columnJoint.end())
           throw InputError(name, where, "header names '" + column + "' twice");
@@ -56,11 +59,15 @@ Eigen::MatrixXd readPostureCsv(const std::filesystem::path& file, const JointLim
       }
       for (std::size_t j = 0; j < hand.size(); ++j)
         if (std::find(columnJoint.begin(), columnJoint.end(), static_cast<int>(j)) == columnJoint.end())
-          throw InputError(name, where, "no column for hand joint '" + hand[j].name + "'; expected a header naming the hand joints: " + jointList(hand));
+          throw InputError(name, where,
+                           "no column for hand joint '" + hand[j].name +
+                               "'; expected a header naming the hand joints: " + jointList(hand));
       continue;
     }
     if (values.size() != columnJoint.size())
-      throw InputError(name, where, "expected " + std::to_string(columnJoint.size()) + " values, got " + std::to_string(values.size()));
+      throw InputError(
+          name, where,
+          "expected " + std::to_string(columnJoint.size()) + " values, got " + std::to_string(values.size()));
     Eigen::VectorXd posture(static_cast<Eigen::Index>(hand.size()));
     for (std::size_t c = 0; c < values.size(); ++c) {
       const JointLimit& joint = hand[static_cast<std::size_t>(columnJoint[c])];
@@ -69,13 +76,16 @@ Eigen::MatrixXd readPostureCsv(const std::filesystem::path& file, const JointLim
       if (!value) throw InputError(name, field, "expected a number in " + unitName + ", got '" + values[c] + "'");
       const double radians = *value * scale;
       if (radians < joint.lower - 1e-9 || radians > joint.upper + 1e-9)
-        throw InputError(name, field, values[c] + " " + unitName + " is outside the joint limits " +
-                                          messageNumberText(joint.lower / scale) + " .. " + messageNumberText(joint.upper / scale) + " " + unitName);
+        throw InputError(name, field,
+                         values[c] + " " + unitName + " is outside the joint limits " +
+                             messageNumberText(joint.lower / scale) + " .. " + messageNumberText(joint.upper / scale) +
+                             " " + unitName);
       posture[columnJoint[c]] = std::clamp(radians, joint.lower, joint.upper);
     }
     rows.push_back(std::move(posture));
   }
-  if (columnJoint.empty()) throw InputError(name, "line 1", "empty file; expected a header naming the hand joints: " + jointList(hand));
+  if (columnJoint.empty())
+    throw InputError(name, "line 1", "empty file; expected a header naming the hand joints: " + jointList(hand));
   Eigen::MatrixXd postures(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(hand.size()));
   for (std::size_t r = 0; r < rows.size(); ++r) postures.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
   return postures;

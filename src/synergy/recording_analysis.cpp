@@ -9,8 +9,8 @@ RecordingAnalysis analyseRecording(const GloveRecording& recording, const GloveC
   RecordingAnalysis analysis;
   analysis.clampedValues = mapped.clampedValues;
   analysis.clampedPerJoint = mapped.clampedPerJoint;
-  analysis.fit = fitSynergyModel(mapped.postures, handJoints, options,
-                                 {recording.source, recording.dataLocation, provenance});
+  analysis.fit =
+      fitSynergyModel(mapped.postures, handJoints, options, {recording.source, recording.dataLocation, provenance});
   return analysis;
 }
 

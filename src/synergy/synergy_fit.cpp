@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pinned_product_blocking.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/number_text.hpp"
-#include "pinned_product_blocking.hpp"
 
 namespace pmdplan {
 namespace {
@@ -37,12 +37,12 @@ std::vector<int> ownAxisIndices(const JointLimits& joints, const SynergyFitOptio
 
 }  // namespace
 
-SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints,
-                           const SynergyFitOptions& options, const PostureSource& source) {
+SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitOptions& options,
+                           const PostureSource& source) {
   const auto jointCount = static_cast<Eigen::Index>(joints.size());
   if (postures.cols() != jointCount)
-    throw std::invalid_argument("fitSynergyModel: postures have " + std::to_string(postures.cols()) +
-                                " columns for " + std::to_string(jointCount) + " joints");
+    throw std::invalid_argument("fitSynergyModel: postures have " + std::to_string(postures.cols()) + " columns for " +
+                                std::to_string(jointCount) + " joints");
   const std::vector<int> ownAxis = ownAxisIndices(joints, options);
   const auto frames = postures.rows();
   if (frames < 2)
@@ -54,7 +54,8 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
       if (!std::isfinite(postures(f, j)))
         throw InputError(source.file, "frame " + std::to_string(f + 1),
                          "joint " + joints[static_cast<std::size_t>(j)].name +
-                             " is not a finite number after calibration and mapping; check the coefficients of the calibration and the mapping");
+                             " is not a finite number after calibration and mapping; check the coefficients of the "
+                             "calibration and the mapping");
 
   Eigen::MatrixXd unit(frames, jointCount);
   for (Eigen::Index j = 0; j < jointCount; ++j) {
@@ -78,8 +79,10 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
     const std::string& name = joints[static_cast<std::size_t>(j)].name;
     const bool constant = unit.col(j).maxCoeff() - unit.col(j).minCoeff() <= options.constantTolerance;
     const bool own = std::find(ownAxis.begin(), ownAxis.end(), j) != ownAxis.end();
-    if (constant) fit.constantJoints.push_back(name);
-    else varying.push_back(static_cast<int>(j));
+    if (constant)
+      fit.constantJoints.push_back(name);
+    else
+      varying.push_back(static_cast<int>(j));
     if (!constant && !own) {
       pca.push_back(static_cast<int>(j));
       fit.pcaJoints.push_back(name);
@@ -98,7 +101,8 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
 
   const Eigen::RowVectorXd mean = unit.colwise().mean();
   Eigen::MatrixXd centred(frames, p);
-  for (Eigen::Index k = 0; k < p; ++k) centred.col(k) = unit.col(pca[static_cast<std::size_t>(k)]).array() - mean(pca[static_cast<std::size_t>(k)]);
+  for (Eigen::Index k = 0; k < p; ++k)
+    centred.col(k) = unit.col(pca[static_cast<std::size_t>(k)]).array() - mean(pca[static_cast<std::size_t>(k)]);
   const Eigen::MatrixXd covariance = gramOverFrames(centred) / static_cast<double>(frames - 1);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(covariance);
   if (solver.info() != Eigen::Success) throw std::runtime_error("fitSynergyModel: eigensolver failed");
@@ -129,7 +133,8 @@ SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& j
 
   const auto v = static_cast<Eigen::Index>(varying.size());
   Eigen::MatrixXd moving(frames, v);
-  for (Eigen::Index k = 0; k < v; ++k) moving.col(k) = unit.col(varying[static_cast<std::size_t>(k)]).array() - mean(varying[static_cast<std::size_t>(k)]);
+  for (Eigen::Index k = 0; k < v; ++k)
+    moving.col(k) = unit.col(varying[static_cast<std::size_t>(k)]).array() - mean(varying[static_cast<std::size_t>(k)]);
   const Eigen::MatrixXd movingCovariance = gramOverFrames(moving);
   const Eigen::VectorXd scale = movingCovariance.diagonal().cwiseSqrt().cwiseInverse();
   fit.correlation = scale.asDiagonal() * movingCovariance * scale.asDiagonal();

@@ -23,10 +23,14 @@ using Locate = std::function<std::string(Part, int)>;
 
 std::string defaultLocation(Part part, int index) {
   switch (part) {
-    case Part::Joints: return "joints";
-    case Part::Mean: return "mean";
-    case Part::OwnAxis: return "own_axis_joints";
-    case Part::Direction: return "directions[" + std::to_string(index) + "]";
+    case Part::Joints:
+      return "joints";
+    case Part::Mean:
+      return "mean";
+    case Part::OwnAxis:
+      return "own_axis_joints";
+    case Part::Direction:
+      return "directions[" + std::to_string(index) + "]";
   }
   return {};
 }
@@ -54,7 +58,8 @@ void validate(const SynergyModel& model, const std::string& source, const Locate
   std::vector<int> ownAxis;
   for (const auto& name : model.ownAxisJoints) {
     const int index = model.jointIndex(name);
-    if (index < 0) throw InputError(source, at(Part::OwnAxis, 0), "own-axis joint '" + name + "' is not among the joints");
+    if (index < 0)
+      throw InputError(source, at(Part::OwnAxis, 0), "own-axis joint '" + name + "' is not among the joints");
     ownAxis.push_back(index);
   }
   const auto d = model.directionCount();
@@ -64,8 +69,7 @@ void validate(const SynergyModel& model, const std::string& source, const Locate
   if (model.sigma.size() != d || model.varianceFraction.size() != d)
     throw InputError(source, at(Part::Direction, 0), "every direction needs a sigma and a variance fraction");
   for (int k = 0; k < d; ++k) {
-    if (!(model.sigma(k) >= 0))
-      throw InputError(source, at(Part::Direction, k), "sigma must be zero or positive");
+    if (!(model.sigma(k) >= 0)) throw InputError(source, at(Part::Direction, k), "sigma must be zero or positive");
     if (!(model.varianceFraction(k) >= 0 && model.varianceFraction(k) <= 1 + 1e-9))
       throw InputError(source, at(Part::Direction, k), "variance_fraction must lie in [0, 1]");
     const double length = model.directions.col(k).norm();
@@ -77,7 +81,8 @@ void validate(const SynergyModel& model, const std::string& source, const Locate
       if (std::abs(model.directions(j, k)) > 1e-9)
         throw InputError(source, at(Part::Direction, k),
                          "direction " + std::to_string(k + 1) + " moves own-axis joint " +
-                             model.joints[static_cast<std::size_t>(j)].name + "; own-axis joints stay out of the directions");
+                             model.joints[static_cast<std::size_t>(j)].name +
+                             "; own-axis joints stay out of the directions");
   }
   if (d == 0) return;
   if (model.orthonormal) {
@@ -121,10 +126,9 @@ void validateSynergyModel(const SynergyModel& model, const std::string& sourceNa
 
 SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
   const YAML::Node root = yaml_input::parseDocument(text, file);
-  yaml_input::rejectUnknownKeys(root,
-                                {"format", "version", "provenance", "joints", "own_axis_joints", "orthonormal", "mean",
-                                 "directions"},
-                                file, "");
+  yaml_input::rejectUnknownKeys(
+      root, {"format", "version", "provenance", "joints", "own_axis_joints", "orthonormal", "mean", "directions"}, file,
+      "");
   yaml_input::checkFormat(root, kFormat, file);
   SynergyModel model;
   if (const YAML::Node provenance = root["provenance"]; provenance.IsDefined())
@@ -137,9 +141,10 @@ SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
     const YAML::Node joint = joints[i];
     yaml_input::expectMap(joint, file, context);
     yaml_input::rejectUnknownKeys(joint, {"name", "lower", "upper"}, file, context);
-    model.joints.push_back({yaml_input::text(yaml_input::required(joint, "name", file, context), file, context + ".name"),
-                            yaml_input::number(yaml_input::required(joint, "lower", file, context), file, context + ".lower"),
-                            yaml_input::number(yaml_input::required(joint, "upper", file, context), file, context + ".upper")});
+    model.joints.push_back(
+        {yaml_input::text(yaml_input::required(joint, "name", file, context), file, context + ".name"),
+         yaml_input::number(yaml_input::required(joint, "lower", file, context), file, context + ".lower"),
+         yaml_input::number(yaml_input::required(joint, "upper", file, context), file, context + ".upper")});
   }
   if (const YAML::Node own = root["own_axis_joints"]; own.IsDefined() && !own.IsNull()) {
     yaml_input::expectSequence(own, file, "own_axis_joints");
@@ -162,7 +167,8 @@ SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
     const std::string context = "directions[" + std::to_string(k) + "]";
     yaml_input::expectMap(direction, file, context);
     yaml_input::rejectUnknownKeys(direction, {"sigma", "variance_fraction", "vector"}, file, context);
-    model.sigma(k) = yaml_input::number(yaml_input::required(direction, "sigma", file, context), file, context + ".sigma");
+    model.sigma(k) =
+        yaml_input::number(yaml_input::required(direction, "sigma", file, context), file, context + ".sigma");
     model.varianceFraction(k) = yaml_input::number(yaml_input::required(direction, "variance_fraction", file, context),
                                                    file, context + ".variance_fraction");
     const Eigen::VectorXd vector =
@@ -176,11 +182,19 @@ SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
   validate(model, file, [&](Part part, int index) {
     const std::string name = defaultLocation(part, index);
     switch (part) {
-      case Part::Joints: return yaml_input::lineOf(static_cast<std::size_t>(index) < joints.size() ? joints[static_cast<std::size_t>(index)] : joints) + " (" + name + ")";
-      case Part::Mean: return yaml_input::lineOf(meanNode) + " (mean)";
-      case Part::OwnAxis: return yaml_input::lineOf(root["own_axis_joints"]) + " (own_axis_joints)";
+      case Part::Joints:
+        return yaml_input::lineOf(
+                   static_cast<std::size_t>(index) < joints.size() ? joints[static_cast<std::size_t>(index)] : joints) +
+               " (" + name + ")";
+      case Part::Mean:
+        return yaml_input::lineOf(meanNode) + " (mean)";
+      case Part::OwnAxis:
+        return yaml_input::lineOf(root["own_axis_joints"]) + " (own_axis_joints)";
       case Part::Direction:
-        return yaml_input::lineOf(static_cast<std::size_t>(index) < directions.size() ? directions[static_cast<std::size_t>(index)] : directions) + " (" + name + ")";
+        return yaml_input::lineOf(static_cast<std::size_t>(index) < directions.size()
+                                      ? directions[static_cast<std::size_t>(index)]
+                                      : directions) +
+               " (" + name + ")";
     }
     return name;
   });
@@ -229,10 +243,11 @@ std::filesystem::path shippedSynergyModelPath(const std::string& robotName) {
   const auto path = defaultSynergyModelPath(robotName);
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
-    throw InputError("", "--synergies",
-                     "robot '" + robotName + "' has no shipped synergy model (no " + path.string() +
-                         "): make one with `pmdplan synergies --postures POSTURES.csv --robot URDF -o MODEL.yaml` and pass "
-                         "--synergies MODEL.yaml, or plan without synergies with --planner full");
+    throw InputError(
+        "", "--synergies",
+        "robot '" + robotName + "' has no shipped synergy model (no " + path.string() +
+            "): make one with `pmdplan synergies --postures POSTURES.csv --robot URDF -o MODEL.yaml` and pass "
+            "--synergies MODEL.yaml, or plan without synergies with --planner full");
   return path;
 }
 

@@ -17,10 +17,18 @@ void addPrimitive(Primitive primitive, double amplitude, int start, int length, 
   // Latent coordinates 0-3 are PMD 1-4 (see kautham_sah_synergies.hpp for what each one does).
   Eigen::Vector4d weights = Eigen::Vector4d::Zero();
   switch (primitive) {
-    case Primitive::OpenClose: weights << 0.0, 1.0, 0.0, 0.0; break;   // all fingers close and open
-    case Primitive::Spread: weights << 0.4, 0.0, 0.0, 1.0; break;      // fingers spread apart
-    case Primitive::Opposition: weights << 0.0, 0.0, 1.0, 0.0; break;  // thumb swings across the palm
-    case Primitive::Pinch: weights << 0.3, 0.7, 0.7, 0.0; break;       // thumb meets the closing fingers
+    case Primitive::OpenClose:
+      weights << 0.0, 1.0, 0.0, 0.0;
+      break;  // all fingers close and open
+    case Primitive::Spread:
+      weights << 0.4, 0.0, 0.0, 1.0;
+      break;  // fingers spread apart
+    case Primitive::Opposition:
+      weights << 0.0, 0.0, 1.0, 0.0;
+      break;  // thumb swings across the palm
+    case Primitive::Pinch:
+      weights << 0.3, 0.7, 0.7, 0.0;
+      break;  // thumb meets the closing fingers
   }
   for (int i = 0; i < length && start + i < latent.rows(); ++i) {
     const double phase = portable::sin(std::numbers::pi * (i + 0.5) / length);
@@ -65,8 +73,9 @@ Eigen::MatrixXd generateLatentMotion(const LatentMotionSettings& settings, Deter
   const Eigen::MatrixXd covariance = gramOverFrames(latent) / static_cast<double>(frames - 1);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(covariance);
   // Symmetric whitening moves the paths least of all whitening transforms, keeping them smooth.
-  const Eigen::MatrixXd whitening =
-      solver.eigenvectors() * solver.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() * solver.eigenvectors().transpose();
+  const Eigen::MatrixXd whitening = solver.eigenvectors() *
+                                    solver.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
+                                    solver.eigenvectors().transpose();
   Eigen::MatrixXd white = latent * whitening;
   for (Eigen::Index k = 0; k < count; ++k) white.col(k) *= std::sqrt(settings.variances[static_cast<std::size_t>(k)]);
   return white;

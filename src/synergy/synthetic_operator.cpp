@@ -8,15 +8,15 @@
 #include "deterministic_random.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/cyberglove_sensors.hpp"
+#include "pmdplan/synergy/kautham_sah_synergies.hpp"
 #include "synthetic_latent_basis.hpp"
 #include "synthetic_latent_motion.hpp"
-#include "pmdplan/synergy/kautham_sah_synergies.hpp"
 
 namespace pmdplan {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-constexpr int kLowestCount = 1;    // the glove sends 1..255
+constexpr int kLowestCount = 1;  // the glove sends 1..255
 constexpr int kHighestCount = 255;
 // Raw counts the synthetic calibration leaves beyond the joint range on each side, as a share of the
 // range: a real operator's hand goes past what the robot can do, and those frames are clamped.
@@ -67,15 +67,18 @@ const std::vector<double>& syntheticOperatorVarianceFractions() {
   return fractions;
 }
 
-SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& parameters,
-                                             const HandMapping& mapping, const JointLimits& handJoints) {
+SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& parameters, const HandMapping& mapping,
+                                             const JointLimits& handJoints) {
   if (parameters.frames < 1 || parameters.frames > kMaxSyntheticFrames)
-    throw InputError("", "frames", "expected 1 to " + std::to_string(kMaxSyntheticFrames) + " frames, got " + std::to_string(parameters.frames));
+    throw InputError(
+        "", "frames",
+        "expected 1 to " + std::to_string(kMaxSyntheticFrames) + " frames, got " + std::to_string(parameters.frames));
   if (!(parameters.sampleRateHz > 0) || !(parameters.timeConstantS > 0) || !(parameters.totalVariance > 0))
     throw InputError("", "synthetic operator", "sample rate, time constant and total variance must be positive");
   const KauthamSahSynergies& table = kauthamSahSynergies();
   const auto limitOf = [&](const std::string& name) -> const JointLimit& {
-    const auto it = std::find_if(handJoints.begin(), handJoints.end(), [&](const JointLimit& j) { return j.name == name; });
+    const auto it =
+        std::find_if(handJoints.begin(), handJoints.end(), [&](const JointLimit& j) { return j.name == name; });
     if (it == handJoints.end())
       throw InputError("", "robot", "the synthetic operator models the SAH hand; the robot has no joint " + name);
     return *it;
@@ -115,13 +118,15 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
   for (Eigen::Index r = 0; r < latentCount; ++r) {
     const std::string& joint = table.joints[static_cast<std::size_t>(latentRows[static_cast<std::size_t>(r)])];
     limitOf(joint);
-    const auto rule = std::find_if(mapping.rules.begin(), mapping.rules.end(), [&](const JointRule& x) { return x.joint == joint; });
+    const auto rule =
+        std::find_if(mapping.rules.begin(), mapping.rules.end(), [&](const JointRule& x) { return x.joint == joint; });
     if (rule == mapping.rules.end())
       throw InputError(mapping.sourceFile, "joints", "the synthetic operator needs a rule for joint " + joint);
     const std::string where = "line " + std::to_string(rule->sourceLine) + " (joint " + joint + ")";
     if (rule->terms.size() != 1 || rule->terms.front().gain == 0)
-      throw InputError(mapping.sourceFile, where,
-                       "the synthetic operator inverts the mapping, so joint " + joint + " must follow exactly one sensor");
+      throw InputError(
+          mapping.sourceFile, where,
+          "the synthetic operator inverts the mapping, so joint " + joint + " must follow exactly one sensor");
     const int sensor = rule->terms.front().sensor;
     if (driven[static_cast<std::size_t>(sensor)])
       throw InputError(mapping.sourceFile, where,
@@ -150,7 +155,8 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
   const int thumbAb = cyberGloveSensorIndex("ThumbAb");
   const auto calibrateRange = [&](int sensor, double low, double high) {
     // ThumbRotate's counts leave room for the cross-talk its calibration removes.
-    const double usable = (kHighestCount - kLowestCount) - (sensor == thumbRotate ? kThumbCrossTalk * kHighestCount : 0.0);
+    const double usable =
+        (kHighestCount - kLowestCount) - (sensor == thumbRotate ? kThumbCrossTalk * kHighestCount : 0.0);
     SensorCalibration& entry = calibration.sensors[static_cast<std::size_t>(sensor)];
     entry.gain = (high - low) / usable;
     entry.offset = low - entry.gain * kLowestCount;
@@ -167,7 +173,8 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
     const double atLower = (limit.lower - rule.offset) / gain;
     const double atUpper = (limit.upper - rule.offset) / gain;
     const double width = std::abs(atUpper - atLower);
-    calibrateRange(sensor, std::min(atLower, atUpper) - kRangeMargin * width, std::max(atLower, atUpper) + kRangeMargin * width);
+    calibrateRange(sensor, std::min(atLower, atUpper) - kRangeMargin * width,
+                   std::max(atLower, atUpper) + kRangeMargin * width);
   }
 
   const auto jointColumn = [&](const std::string& name) -> Eigen::Index {
@@ -178,7 +185,8 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
   for (int sensor = 0; sensor < kCyberGloveSensorCount; ++sensor) {
     if (driven[static_cast<std::size_t>(sensor)]) continue;
     const std::string_view name = cyberGloveSensorNames()[static_cast<std::size_t>(sensor)];
-    const auto model = std::find_if(otherSensors().begin(), otherSensors().end(), [&](const OtherSensor& s) { return name == s.sensor; });
+    const auto model = std::find_if(otherSensors().begin(), otherSensors().end(),
+                                    [&](const OtherSensor& s) { return name == s.sensor; });
     // A sensor that a custom mapping leaves out of both lists just wanders around mid-range.
     const OtherSensor fallback{"", -30, 110, 10, [](const auto&) { return 40 * kDegree; }};
     const OtherSensor& other = model != otherSensors().end() ? *model : fallback;
@@ -206,15 +214,16 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
     if (crossTalk) {
       // The reading carries the cross-talk; calibration (gain·raw + offset + cross gain·raw[ThumbAb]) removes it.
       const double crossAngle = calibration.crossTerms.front().gain * frame[static_cast<std::size_t>(thumbAb)];
-      frame[static_cast<std::size_t>(thumbRotate)] = static_cast<std::uint8_t>(
-          countFor(sensorAngles(f, thumbRotate), calibration.sensors[static_cast<std::size_t>(thumbRotate)], crossAngle));
+      frame[static_cast<std::size_t>(thumbRotate)] = static_cast<std::uint8_t>(countFor(
+          sensorAngles(f, thumbRotate), calibration.sensors[static_cast<std::size_t>(thumbRotate)], crossAngle));
     }
     recording.timeS[static_cast<std::size_t>(f)] = f / parameters.sampleRateHz;
   }
   const std::string seedText = std::to_string(parameters.seed);
   recording.notes = {
       "SYNTHETIC glove recording: made by pmdplan's synthetic operator, NOT captured from a human hand.",
-      "Latent synergies from the SAH PMD table of docs/reference_data.md sect. 4 (paper Sect. 4), smooth random motion mixed with",
+      "Latent synergies from the SAH PMD table of docs/reference_data.md sect. 4 (paper Sect. 4), smooth random motion "
+      "mixed with",
       "open/close, spread, opposition and pinch primitives; seed " + seedText + ", " + std::to_string(frames) +
           " frames at " + std::to_string(static_cast<int>(parameters.sampleRateHz)) + " Hz; raw CyberGlove counts.",
   };

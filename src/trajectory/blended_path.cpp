@@ -28,7 +28,8 @@ BlendedPath::BlendedPath(const std::vector<Configuration>& waypoints, double ble
   if (!(blendTolerance > 0.0)) throw std::invalid_argument("the blending tolerance must be positive");
   const std::size_t n = waypoints.size();
   for (std::size_t i = 1; i < n; ++i)
-    if ((waypoints[i] - waypoints[i - 1]).norm() == 0.0) throw std::invalid_argument("two consecutive waypoints are equal");
+    if ((waypoints[i] - waypoints[i - 1]).norm() == 0.0)
+      throw std::invalid_argument("two consecutive waypoints are equal");
   // Each interior corner's blend reaches `reach[i]` along both neighbouring segments.
   std::vector<double> reach(n, 0.0);
   for (std::size_t i = 1; i + 1 < n; ++i) {
@@ -38,7 +39,8 @@ BlendedPath::BlendedPath(const std::vector<Configuration>& waypoints, double ble
     if (angle > M_PI - kReversal) throw std::invalid_argument("a corner reverses the direction and cannot be blended");
     if (angle < kCollinear) continue;
     const double half = angle / 2.0;
-    // The arc's distance from the corner is r / cos(half) - r; reach = tolerance·sin/(1 - cos) makes it equal the tolerance.
+    // The arc's distance from the corner is r / cos(half) - r; reach = tolerance·sin/(1 - cos) makes it equal the
+    // tolerance.
     reach[i] = std::min({in.norm() / 2.0, out.norm() / 2.0, blendTolerance * std::sin(half) / (1.0 - std::cos(half))});
   }
   Eigen::VectorXd cursor = waypoints.front();
@@ -83,8 +85,8 @@ void BlendedPath::addLinear(const Eigen::VectorXd& from, const Eigen::VectorXd& 
   length_ += segment.length;
 }
 
-void BlendedPath::addArc(const Eigen::VectorXd& centre, const Eigen::VectorXd& x, const Eigen::VectorXd& y, double radius,
-                         double angle) {
+void BlendedPath::addArc(const Eigen::VectorXd& centre, const Eigen::VectorXd& x, const Eigen::VectorXd& y,
+                         double radius, double angle) {
   Segment segment;
   segment.start = length_;
   segment.length = radius * angle;

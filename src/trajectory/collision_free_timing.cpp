@@ -2,9 +2,10 @@
 
 namespace pmdplan {
 
-CollisionFreeTiming timeCollisionFree(const std::vector<Configuration>& waypoints, const std::vector<JointMotionLimit>& limits,
-                                      const TimingSettings& settings, StateValidator& states, const SweptDistanceBound& bound,
-                                      double tolerance, int halvings) {
+CollisionFreeTiming timeCollisionFree(const std::vector<Configuration>& waypoints,
+                                      const std::vector<JointMotionLimit>& limits, const TimingSettings& settings,
+                                      StateValidator& states, const SweptDistanceBound& bound, double tolerance,
+                                      int halvings) {
   CollisionFreeTiming result;
   TimingSettings attempt = settings;
   for (int k = 0;; ++k) {

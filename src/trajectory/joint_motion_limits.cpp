@@ -38,12 +38,14 @@ std::map<std::string, FileLimit> readLimitsFile(const RobotModel& robot, const s
   for (const auto& entry : joints) {
     const std::string name = yaml_input::text(entry.first, file, "joint_limits");
     const std::string key = "joint_limits." + name;
-    if (robot.jointIndex(name) < 0 || robot.joints()[static_cast<std::size_t>(robot.jointIndex(name))].type == JointType::Fixed)
+    if (robot.jointIndex(name) < 0 ||
+        robot.joints()[static_cast<std::size_t>(robot.jointIndex(name))].type == JointType::Fixed)
       throw InputError(file, key, "'" + name + "' is not a moving joint of robot " + robot.name());
     yaml_input::expectMap(entry.second, file, key);
     yaml_input::rejectUnknownKeys(entry.second, {"max_velocity", "max_acceleration"}, file, key);
     FileLimit limit;
-    if (entry.second["max_velocity"]) limit.velocity = positive(entry.second["max_velocity"], file, key + ".max_velocity");
+    if (entry.second["max_velocity"])
+      limit.velocity = positive(entry.second["max_velocity"], file, key + ".max_velocity");
     if (entry.second["max_acceleration"])
       limit.acceleration = positive(entry.second["max_acceleration"], file, key + ".max_acceleration");
     limits[name] = limit;
@@ -58,20 +60,24 @@ std::filesystem::path jointLimitsFileFor(const RobotModel& robot) {
   return file.replace_extension(".joint_limits.yaml");
 }
 
-std::vector<JointMotionLimit> jointMotionLimits(const RobotModel& robot, const std::optional<std::filesystem::path>& file,
+std::vector<JointMotionLimit> jointMotionLimits(const RobotModel& robot,
+                                                const std::optional<std::filesystem::path>& file,
                                                 const JointMotionDefaults& defaults) {
   std::map<std::string, FileLimit> fromFile;
   if (file) {
     fromFile = readLimitsFile(robot, *file);
-  } else if (const auto beside = jointLimitsFileFor(robot); !robot.urdfPath().empty() && std::filesystem::exists(beside)) {
+  } else if (const auto beside = jointLimitsFileFor(robot);
+             !robot.urdfPath().empty() && std::filesystem::exists(beside)) {
     fromFile = readLimitsFile(robot, beside);
   }
   const auto own = [&](const Joint& joint) {
     JointMotionLimit limit{joint.name, joint.velocity > 0.0 ? joint.velocity : defaults.velocity, 0.0};
     const auto found = fromFile.find(joint.name);
-    if (found != fromFile.end() && found->second.velocity) limit.velocity = std::min(limit.velocity, *found->second.velocity);
-    limit.acceleration = found != fromFile.end() && found->second.acceleration ? *found->second.acceleration
-                                                                               : defaults.accelerationPerVelocity * limit.velocity;
+    if (found != fromFile.end() && found->second.velocity)
+      limit.velocity = std::min(limit.velocity, *found->second.velocity);
+    limit.acceleration = found != fromFile.end() && found->second.acceleration
+                             ? *found->second.acceleration
+                             : defaults.accelerationPerVelocity * limit.velocity;
     return limit;
   };
   std::vector<JointMotionLimit> limits(static_cast<std::size_t>(robot.dof()));

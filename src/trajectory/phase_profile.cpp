@@ -9,9 +9,9 @@
 namespace pmdplan {
 namespace {
 
-constexpr double kProbe = 1e-6;        ///< path length probed on each side of a candidate switching point
-constexpr double kScanStep = 1e-3;     ///< path length between probes of the velocity limit curve
-constexpr double kSlack = 1e-9;        ///< relative slack when comparing with a limit curve
+constexpr double kProbe = 1e-6;     ///< path length probed on each side of a candidate switching point
+constexpr double kScanStep = 1e-3;  ///< path length between probes of the velocity limit curve
+constexpr double kSlack = 1e-9;     ///< relative slack when comparing with a limit curve
 
 /// A switching point and the accelerations to leave it with: backward (before) and forward (after).
 /// At an arc's tangent-zero point the limit curve is a smooth minimum and both are 0 there.
@@ -22,7 +22,7 @@ struct Switch {
 };
 
 class Integrator {
-public:
+ public:
   Integrator(const PhasePlane& plane, double timeStep) : plane_(plane), path_(plane.path()), dt_(timeStep) {
     for (const auto& point : path_.switchingPoints())
       if (point.discontinuity) discontinuities_.push_back(point.s);
@@ -45,7 +45,7 @@ public:
     return points_;
   }
 
-private:
+ private:
   double nextDiscontinuity(double s) const {
     const auto it = std::upper_bound(discontinuities_.begin(), discontinuities_.end(), s + 1e-12);
     return it == discontinuities_.end() ? std::numeric_limits<double>::infinity() : *it;
@@ -87,7 +87,8 @@ private:
       for (int halving = 0; halving <= 6; ++halving, step *= 0.5) {
         const double nextSpeed = std::max(0.0, speed + highest * step);
         s = std::min({p.s + step * 0.5 * (speed + nextSpeed), discontinuity, length});
-        const auto end = plane_.accelerationRange(s, std::sqrt(std::max(0.0, p.speedSquared + 2.0 * highest * (s - p.s))));
+        const auto end =
+            plane_.accelerationRange(s, std::sqrt(std::max(0.0, p.speedSquared + 2.0 * highest * (s - p.s))));
         if (end.first > end.second || highest <= end.second * (1.0 + 1e-9) + 1e-12) break;
       }
       if (s <= p.s) return false;
@@ -150,7 +151,8 @@ private:
   /// minimum of the acceleration limit curve (as in MoveIt's implementation of the method).
   bool isCurveMinimum(double s) const {
     const double here = plane_.accelerationLimit(s);
-    return plane_.accelerationLimit(std::max(0.0, s - kProbe)) >= here && plane_.accelerationLimit(std::min(path_.length(), s + kProbe)) >= here;
+    return plane_.accelerationLimit(std::max(0.0, s - kProbe)) >= here &&
+           plane_.accelerationLimit(std::min(path_.length(), s + kProbe)) >= here;
   }
 
   /// Where the acceleration limit curve binds, the one feasible s̈ there against the curve's slope:
@@ -171,7 +173,8 @@ private:
   std::optional<Switch> nextTangentPoint(double from, double end) const {
     for (const auto& segment : path_.segments()) {
       if (!segment.circular || segment.start + segment.length <= from || segment.start >= end) continue;
-      const double first = std::max(from, segment.start) + 1e-9, last = std::min(end, segment.start + segment.length) - 1e-9;
+      const double first = std::max(from, segment.start) + 1e-9,
+                   last = std::min(end, segment.start + segment.length) - 1e-9;
       const auto binds = [&](double s) { return !velocityBinds(s); };
       double previous = first;
       bool previousNegative = binds(first) && curveGap(first) < 0.0;
@@ -204,7 +207,8 @@ private:
       if (point.discontinuity) {
         const double speed = std::min(plane_.limit(point.s, true), plane_.limit(point.s, false));
         if (!isSwitchingPoint(point.s, speed)) continue;
-        found = Switch{{point.s, speed * speed, 0.0}, plane_.accelerationRange(point.s, speed, true).first,
+        found = Switch{{point.s, speed * speed, 0.0},
+                       plane_.accelerationRange(point.s, speed, true).first,
                        plane_.accelerationRange(point.s, speed, false).second};
       } else {
         const double speed = plane_.accelerationLimit(point.s);
@@ -259,7 +263,8 @@ private:
       for (int halving = 0; halving <= 6; ++halving, step *= 0.5) {
         const double earlierSpeed = speed - lowest * step;
         s = std::max({c.s - step * 0.5 * (speed + earlierSpeed), discontinuity, 0.0});
-        const auto start = plane_.accelerationRange(s, std::sqrt(std::max(0.0, c.speedSquared - 2.0 * lowest * (c.s - s))));
+        const auto start =
+            plane_.accelerationRange(s, std::sqrt(std::max(0.0, c.speedSquared - 2.0 * lowest * (c.s - s))));
         if (start.first > start.second || lowest <= start.second * (1.0 + 1e-9) + 1e-12) break;
       }
       const bool clamped = s <= discontinuity;
@@ -270,7 +275,8 @@ private:
         splice(curve, {s, squared, 0.0});
         return;
       }
-      if (s <= 0.0) throw std::runtime_error("time-optimal parameterisation: the backward integration missed the forward one");
+      if (s <= 0.0)
+        throw std::runtime_error("time-optimal parameterisation: the backward integration missed the forward one");
       curve.push_back({s, squared, 0.0});
     }
   }
@@ -280,7 +286,8 @@ private:
   void splice(const std::vector<PhasePoint>& curve, const PhasePoint& earlier) {
     const PhasePoint& later = curve.back();
     const auto backwardAt = [&](double s) {
-      return earlier.speedSquared + (later.speedSquared - earlier.speedSquared) * (s - earlier.s) / (later.s - earlier.s);
+      return earlier.speedSquared +
+             (later.speedSquared - earlier.speedSquared) * (s - earlier.s) / (later.s - earlier.s);
     };
     const auto gap = [&](double s) { return backwardAt(s) - forwardSpeedSquaredAt(s); };
     std::vector<double> breaks{earlier.s};

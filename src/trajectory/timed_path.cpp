@@ -11,7 +11,8 @@ namespace pmdplan {
 void TimingSettings::check() const {
   if (!(std::isfinite(blendTolerance) && blendTolerance >= 0.0))
     throw InputError("", "blend-tolerance", "expected a number of radians >= 0");
-  if (!(velocityScale > 0.0 && velocityScale <= 1.0)) throw InputError("", "velocity-scale", "expected a fraction in (0, 1]");
+  if (!(velocityScale > 0.0 && velocityScale <= 1.0))
+    throw InputError("", "velocity-scale", "expected a fraction in (0, 1]");
   if (!(accelerationScale > 0.0 && accelerationScale <= 1.0))
     throw InputError("", "acceleration-scale", "expected a fraction in (0, 1]");
   if (!(timeStep > 0.0 && timeStep <= 0.1)) throw InputError("", "time-step", "expected seconds in (0, 0.1]");
@@ -23,7 +24,8 @@ TimedPath::TimedPath(const std::vector<Configuration>& waypoints, const std::vec
   if (waypoints.empty()) throw std::invalid_argument("a timed path needs at least one waypoint");
   std::vector<Configuration> distinct{waypoints.front()};
   for (const auto& q : waypoints) {
-    if (q.size() != static_cast<Eigen::Index>(limits.size())) throw std::invalid_argument("a waypoint's size differs from the limits'");
+    if (q.size() != static_cast<Eigen::Index>(limits.size()))
+      throw std::invalid_argument("a waypoint's size differs from the limits'");
     if ((q - distinct.back()).norm() > 0.0) distinct.push_back(q);
   }
   rest_ = distinct.back();
@@ -47,7 +49,8 @@ TimedPath::TimedPath(const std::vector<Configuration>& waypoints, const std::vec
   for (std::size_t i = 1; i < distinct.size(); ++i) {
     stretch.push_back(distinct[i]);
     const bool corner = i + 1 < distinct.size();
-    if (corner && (settings.blendTolerance == 0.0 || isReversal(distinct[i - 1], distinct[i], distinct[i + 1]))) close();
+    if (corner && (settings.blendTolerance == 0.0 || isReversal(distinct[i - 1], distinct[i], distinct[i + 1])))
+      close();
   }
   close();
 }
@@ -75,7 +78,8 @@ TimedState TimedPath::at(double t) const {
   if (piece != pieces_.begin()) --piece;
   const auto& profile = piece->profile;
   const double local = std::min(state.time - piece->startTime, profile.back().time);
-  auto next = std::upper_bound(profile.begin(), profile.end(), local, [](double value, const PhasePoint& p) { return value < p.time; });
+  auto next = std::upper_bound(profile.begin(), profile.end(), local,
+                               [](double value, const PhasePoint& p) { return value < p.time; });
   if (next == profile.end()) next = std::prev(profile.end());
   if (next == profile.begin()) next = std::next(profile.begin());
   const PhasePoint& a = *std::prev(next);

@@ -28,8 +28,9 @@ bool isPrismatic(const RobotModel& robot, const std::string& jointName) {
 
 /// The values given, by active index; with `every`, each active joint must appear.
 std::vector<std::pair<int, double>> readValues(const YamlField& field, const RobotModel& robot, bool every) {
-  const std::string form = std::string("{joints_deg: {joint: degrees, ...}} or {joints: {joint: radians, ...}} listing ") +
-                           (every ? "every active joint once" : "the joints to hold");
+  const std::string form =
+      std::string("{joints_deg: {joint: degrees, ...}} or {joints: {joint: radians, ...}} listing ") +
+      (every ? "every active joint once" : "the joints to hold");
   field.requireMapWithKeys({"joints_deg", "joints"}, form);
   const bool inDegrees = field.has("joints_deg");
   if (inDegrees && field.has("joints")) {
@@ -50,16 +51,14 @@ std::vector<std::pair<int, double>> readValues(const YamlField& field, const Rob
       if (jointIndex >= 0) {
         const Joint& joint = robot.joints()[static_cast<std::size_t>(jointIndex)];
         if (joint.mimicSource >= 0) {
-          value.fail("'" + name + "' follows " +
-                     robot.joints()[static_cast<std::size_t>(joint.mimicSource)].name +
-                     " (mimic) and is derived from it; list only active joints: " +
-                     listNames(robot.activeJointNames()));
+          value.fail(
+              "'" + name + "' follows " + robot.joints()[static_cast<std::size_t>(joint.mimicSource)].name +
+              " (mimic) and is derived from it; list only active joints: " + listNames(robot.activeJointNames()));
         }
         if (robot.heldJointValue(name))
           value.fail("'" + name + "' is held by the task's `fixed:` entry; list only active joints: " +
                      listNames(robot.activeJointNames()));
-        value.fail("'" + name + "' is a fixed joint; list only active joints: " +
-                   listNames(robot.activeJointNames()));
+        value.fail("'" + name + "' is a fixed joint; list only active joints: " + listNames(robot.activeJointNames()));
       }
       value.fail("unknown joint '" + name + "' for robot " + robot.name() +
                  "; its active joints are: " + listNames(robot.activeJointNames()));
@@ -69,13 +68,11 @@ std::vector<std::pair<int, double>> readValues(const YamlField& field, const Rob
       value.fail("prismatic joint: give its value in metres under `joints`, not in degrees");
     }
     const JointLimit& limit = limits[slot];
-    const std::string range = formatValue(limit.lower / toInternal) + " .. " +
-                              formatValue(limit.upper / toInternal) + " " + unit;
+    const std::string range =
+        formatValue(limit.lower / toInternal) + " .. " + formatValue(limit.upper / toInternal) + " " + unit;
     double internal = value.number("a joint value in " + unit + " within " + range) * toInternal;
-    if (internal < limit.lower - kJointLimitTolerance ||
-        internal > limit.upper + kJointLimitTolerance) {
-      value.fail(formatValue(internal / toInternal) + " " + unit + " is outside the joint limits " +
-                 range);
+    if (internal < limit.lower - kJointLimitTolerance || internal > limit.upper + kJointLimitTolerance) {
+      value.fail(formatValue(internal / toInternal) + " " + unit + " is outside the joint limits " + range);
     }
     // Degree values written at a limit convert to within rounding of it: keep them exactly on it,
     // so that normalised coordinates stay inside [0, 1].
@@ -89,8 +86,8 @@ std::vector<std::pair<int, double>> readValues(const YamlField& field, const Rob
     if (!given[i]) missing.push_back(limits[i].name);
   }
   if (!missing.empty()) {
-    values.fail("missing joint" + std::string(missing.size() > 1 ? "s " : " ") +
-                listNames(missing) + "; every active joint appears exactly once (joints the task keeps still "
+    values.fail("missing joint" + std::string(missing.size() > 1 ? "s " : " ") + listNames(missing) +
+                "; every active joint appears exactly once (joints the task keeps still "
                 "go under `fixed: {joints_deg: {...}}` instead)");
   }
   return out;

@@ -41,7 +41,8 @@ Shape readMesh(const YamlField& field, const std::filesystem::path& taskDirector
   if (written.empty()) fileField.fail("expected a mesh file path, got an empty string");
   std::filesystem::path resolved;
   try {
-    resolved = resolveResourcePath(written, taskDirectory / std::filesystem::path(fileField.file()).filename(), fileField.path());
+    resolved = resolveResourcePath(written, taskDirectory / std::filesystem::path(fileField.file()).filename(),
+                                   fileField.path());
   } catch (const InputError& e) {
     fileField.fail(e.message() + " (relative paths are relative to the task file)");
   }
@@ -53,8 +54,8 @@ Shape readMesh(const YamlField& field, const std::filesystem::path& taskDirector
 }
 
 Obstacle readObstacle(const YamlField& field, const std::filesystem::path& taskDirectory) {
-  field.requireMapWithKeys({"name", "box", "cylinder", "sphere", "mesh", "xyz", "rpy_deg"},
-                           kObstacleForm, "unknown obstacle type or key");
+  field.requireMapWithKeys({"name", "box", "cylinder", "sphere", "mesh", "xyz", "rpy_deg"}, kObstacleForm,
+                           "unknown obstacle type or key");
   Obstacle obstacle;
   const YamlField nameField = field.child("name", "a unique obstacle name");
   obstacle.name = nameField.text("a unique obstacle name");
@@ -65,21 +66,25 @@ Obstacle readObstacle(const YamlField& field, const std::filesystem::path& taskD
   for (const char* candidateType : {"box", "cylinder", "sphere", "mesh"}) {
     if (auto candidate = field.optionalChild(candidateType)) {
       if (shapeField) {
-        candidate->fail("an obstacle has exactly one shape, but " + shapeField->path() +
-                        " is given too");
+        candidate->fail("an obstacle has exactly one shape, but " + shapeField->path() + " is given too");
       }
       shapeField = candidate;
       type = candidateType;
     }
   }
   if (!shapeField) {
-    field.fail("no shape; expected one of box: [x, y, z], cylinder: {radius, length}, "
-               "sphere: radius, mesh: {file, scale}");
+    field.fail(
+        "no shape; expected one of box: [x, y, z], cylinder: {radius, length}, "
+        "sphere: radius, mesh: {file, scale}");
   }
-  if (type == "box") obstacle.shape = readBox(*shapeField);
-  else if (type == "cylinder") obstacle.shape = readCylinder(*shapeField);
-  else if (type == "sphere") obstacle.shape = readSphere(*shapeField);
-  else obstacle.shape = readMesh(*shapeField, taskDirectory);
+  if (type == "box")
+    obstacle.shape = readBox(*shapeField);
+  else if (type == "cylinder")
+    obstacle.shape = readCylinder(*shapeField);
+  else if (type == "sphere")
+    obstacle.shape = readSphere(*shapeField);
+  else
+    obstacle.shape = readMesh(*shapeField, taskDirectory);
 
   obstacle.pose = readPlacement(field);
   return obstacle;
@@ -87,8 +92,7 @@ Obstacle readObstacle(const YamlField& field, const std::filesystem::path& taskD
 
 }  // namespace
 
-std::vector<Obstacle> readObstacles(const YamlField& list,
-                                    const std::filesystem::path& taskDirectory) {
+std::vector<Obstacle> readObstacles(const YamlField& list, const std::filesystem::path& taskDirectory) {
   std::vector<Obstacle> obstacles;
   std::map<std::string, std::string> firstPath;
   const std::vector<YamlField> items = list.elements(std::string("a list of ") + kObstacleForm);
@@ -98,8 +102,9 @@ std::vector<Obstacle> readObstacles(const YamlField& list,
   for (const YamlField& item : items) {
     Obstacle obstacle = readObstacle(item, taskDirectory);
     if (const auto previous = firstPath.find(obstacle.name); previous != firstPath.end()) {
-      item.child("name", "").fail("obstacle name '" + obstacle.name + "' is already used by " +
-                                  previous->second + "; names must be unique");
+      item.child("name", "")
+          .fail("obstacle name '" + obstacle.name + "' is already used by " + previous->second +
+                "; names must be unique");
     }
     firstPath.emplace(obstacle.name, item.path());
     obstacles.push_back(std::move(obstacle));

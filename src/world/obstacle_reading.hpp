@@ -10,7 +10,6 @@ namespace pmdplan {
 
 /// Every obstacle of the list, with unique names; relative mesh paths are resolved against
 /// `taskDirectory` and must name an existing file.
-std::vector<Obstacle> readObstacles(const YamlField& list,
-                                    const std::filesystem::path& taskDirectory);
+std::vector<Obstacle> readObstacles(const YamlField& list, const std::filesystem::path& taskDirectory);
 
 }  // namespace pmdplan

@@ -2,11 +2,11 @@
 
 #include "joint_values_reading.hpp"
 #include "obstacle_reading.hpp"
+#include "placement_reading.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/model/resource_path.hpp"
-#include "placement_reading.hpp"
 #include "yaml_field.hpp"
 
 namespace pmdplan {
@@ -18,8 +18,7 @@ constexpr const char* kRobotForm =
 
 /// `robot:` names a built-in robot unless it looks like a path (has a directory part or ends in
 /// .urdf); a URDF path uses the SRDF of the same stem beside it when there is one.
-std::shared_ptr<const RobotModel> readRobot(const YamlField& field,
-                                            const std::filesystem::path& taskDirectory) {
+std::shared_ptr<const RobotModel> readRobot(const YamlField& field, const std::filesystem::path& taskDirectory) {
   const std::string written = field.text(kRobotForm);
   if (written.empty()) field.fail(std::string("expected ") + kRobotForm + ", got an empty string");
   const std::filesystem::path asPath = written;
@@ -41,8 +40,7 @@ std::shared_ptr<const RobotModel> readRobot(const YamlField& field,
   const auto builtIn = dataDirectory() / "robots" / written / (written + ".urdf");
   std::error_code error;
   if (!std::filesystem::is_regular_file(builtIn, error)) {
-    field.fail("unknown built-in robot '" + written + "' (no " + builtIn.string() +
-               "); expected " + kRobotForm);
+    field.fail("unknown built-in robot '" + written + "' (no " + builtIn.string() + "); expected " + kRobotForm);
   }
   return std::make_shared<const RobotModel>(RobotModel::loadBuiltIn(written));
 }
@@ -84,15 +82,14 @@ Task loadTask(const std::filesystem::path& file) {
   base.requireMapWithKeys({"xyz", "rpy_deg"}, baseForm);
   task.base = readPlacement(base);
 
-  task.obstacles = readObstacles(root.child("obstacles", "a list of obstacles (may be [])"),
-                                 taskDirectory);
+  task.obstacles = readObstacles(root.child("obstacles", "a list of obstacles (may be [])"), taskDirectory);
   if (const auto target = root.optionalChild("target")) {
     const std::string name = target->text("the name of an obstacle");
     if (!task.findObstacle(name)) {
       std::string names;
       for (const auto& obstacle : task.obstacles) names += (names.empty() ? "" : ", ") + obstacle.name;
-      target->fail("'" + name + "' names no obstacle; expected one of: " +
-                   (names.empty() ? std::string("(no obstacles)") : names));
+      target->fail("'" + name +
+                   "' names no obstacle; expected one of: " + (names.empty() ? std::string("(no obstacles)") : names));
     }
     task.target = name;
   }
@@ -100,14 +97,13 @@ Task loadTask(const std::filesystem::path& file) {
   task.start = readJointValues(root.child("start", configurationForm), *task.robot);
   task.goal = readJointValues(root.child("goal", configurationForm), *task.robot);
   if (const auto pregrasp = root.optionalChild("pregrasp")) {
-    if (!task.target) pregrasp->fail("a pregrasp needs the task's target (the obstacle the goal grasps): add `target:`");
+    if (!task.target)
+      pregrasp->fail("a pregrasp needs the task's target (the obstacle the goal grasps): add `target:`");
     task.pregrasp = readJointValues(*pregrasp, *task.robot);
   }
   return task;
 }
 
-Task loadTaskByName(const std::string& nameOrPath) {
-  return loadTask(resolveTaskPath(nameOrPath));
-}
+Task loadTaskByName(const std::string& nameOrPath) { return loadTask(resolveTaskPath(nameOrPath)); }
 
 }  // namespace pmdplan

@@ -28,11 +28,16 @@ std::string quoted(std::string_view text) {
 
 std::string describeNode(const YAML::Node& node) {
   switch (node.Type()) {
-    case YAML::NodeType::Null: return "nothing";
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Map: return "a map";
-    case YAML::NodeType::Scalar: return quoted(node.Scalar());
-    default: return "an undefined value";
+    case YAML::NodeType::Null:
+      return "nothing";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Scalar:
+      return quoted(node.Scalar());
+    default:
+      return "an undefined value";
   }
 }
 
@@ -52,10 +57,9 @@ YAML::Node parseYamlDocument(const std::string& text, const std::string& file) {
   try {
     return YAML::Load(text);
   } catch (const YAML::ParserException& error) {
-    throw InputError(file,
-                     "line " + std::to_string(error.mark.line + 1) + ", column " +
-                         std::to_string(error.mark.column + 1),
-                     "YAML syntax error: " + error.msg);
+    throw InputError(
+        file, "line " + std::to_string(error.mark.line + 1) + ", column " + std::to_string(error.mark.column + 1),
+        "YAML syntax error: " + error.msg);
   }
 }
 
@@ -70,8 +74,7 @@ void YamlField::fail(const std::string& message) const {
   throw InputError(file_, field, message);
 }
 
-std::vector<std::pair<std::string, YamlField>> YamlField::mapEntries(
-    const std::string& expected) const {
+std::vector<std::pair<std::string, YamlField>> YamlField::mapEntries(const std::string& expected) const {
   if (!node_.IsMap()) fail("expected " + expected + ", got " + describeNode(node_));
   std::vector<std::pair<std::string, YamlField>> entries;
   std::map<std::string, int> firstLine;
@@ -83,8 +86,7 @@ std::vector<std::pair<std::string, YamlField>> YamlField::mapEntries(
     const std::string name = key.Scalar();
     YamlField keyField = at(joinFieldPath(path_, name), key);
     if (const auto previous = firstLine.find(name); previous != firstLine.end()) {
-      keyField.fail("given twice (first on line " + std::to_string(previous->second) +
-                    "); each key may appear once");
+      keyField.fail("given twice (first on line " + std::to_string(previous->second) + "); each key may appear once");
     }
     firstLine.emplace(name, keyField.line());
     entries.emplace_back(name, at(joinFieldPath(path_, name), it->second));
@@ -92,8 +94,7 @@ std::vector<std::pair<std::string, YamlField>> YamlField::mapEntries(
   return entries;
 }
 
-void YamlField::requireMapWithKeys(std::initializer_list<std::string_view> allowed,
-                                   const std::string& expected,
+void YamlField::requireMapWithKeys(std::initializer_list<std::string_view> allowed, const std::string& expected,
                                    const std::string& unknownKeyLabel) const {
   if (!node_.IsMap()) fail("expected " + expected + ", got " + describeNode(node_));
   for (auto it = node_.begin(); it != node_.end(); ++it) {
@@ -103,16 +104,14 @@ void YamlField::requireMapWithKeys(std::initializer_list<std::string_view> allow
     for (const auto candidate : allowed) known = known || key.Scalar() == candidate;
     if (!known) {
       at(joinFieldPath(path_, key.Scalar()), key)
-          .fail(unknownKeyLabel + " '" + key.Scalar() + "'; expected " + expected +
-                " (keys: " + joinKeys(allowed) + ")");
+          .fail(unknownKeyLabel + " '" + key.Scalar() + "'; expected " + expected + " (keys: " + joinKeys(allowed) +
+                ")");
     }
   }
   mapEntries(expected);  // rejects repeated and non-scalar keys
 }
 
-bool YamlField::has(std::string_view key) const {
-  return node_.IsMap() && node_[std::string(key)].IsDefined();
-}
+bool YamlField::has(std::string_view key) const { return node_.IsMap() && node_[std::string(key)].IsDefined(); }
 
 YamlField YamlField::child(std::string_view key, const std::string& expected) const {
   if (auto found = optionalChild(key)) return *found;
@@ -145,12 +144,11 @@ std::string YamlField::text(const std::string& expected) const {
 double YamlField::number(const std::string& expected) const {
   if (!node_.IsScalar()) fail("expected " + expected + ", got " + describeNode(node_));
   // A quoted scalar is a string in YAML even if it looks like a number.
-  if (node_.Tag() == "!") fail("expected " + expected + ", got the quoted string " +
-                               quoted(node_.Scalar()));
+  if (node_.Tag() == "!") fail("expected " + expected + ", got the quoted string " + quoted(node_.Scalar()));
   std::string_view digits = node_.Scalar();
-  if (digits == ".nan" || digits == ".NaN" || digits == ".NAN" || digits == ".inf" ||
-      digits == ".Inf" || digits == ".INF" || digits == "-.inf" || digits == "-.Inf" ||
-      digits == "-.INF" || digits == "+.inf" || digits == "+.Inf" || digits == "+.INF") {
+  if (digits == ".nan" || digits == ".NaN" || digits == ".NAN" || digits == ".inf" || digits == ".Inf" ||
+      digits == ".INF" || digits == "-.inf" || digits == "-.Inf" || digits == "-.INF" || digits == "+.inf" ||
+      digits == "+.Inf" || digits == "+.INF") {
     fail("expected " + expected + ", got " + quoted(digits) + ", which is not a finite number");
   }
   if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
@@ -163,8 +161,7 @@ double YamlField::number(const std::string& expected) const {
     fail("expected " + expected + ", got " + quoted(node_.Scalar()));
   }
   if (!std::isfinite(value)) {
-    fail("expected " + expected + ", got " + quoted(node_.Scalar()) +
-         ", which is not a finite number");
+    fail("expected " + expected + ", got " + quoted(node_.Scalar()) + ", which is not a finite number");
   }
   return value;
 }
@@ -182,8 +179,7 @@ double YamlField::positiveNumber(const std::string& expected) const {
 Eigen::Vector3d YamlField::vector3(const std::string& expected) const {
   const auto items = elements(expected);
   if (items.size() != 3) {
-    fail("expected " + expected + ", got a list of " + std::to_string(items.size()) +
-         " values (need exactly 3)");
+    fail("expected " + expected + ", got a list of " + std::to_string(items.size()) + " values (need exactly 3)");
   }
   return {items[0].number(expected), items[1].number(expected), items[2].number(expected)};
 }
@@ -191,11 +187,9 @@ Eigen::Vector3d YamlField::vector3(const std::string& expected) const {
 Eigen::Vector3d YamlField::positiveVector3(const std::string& expected) const {
   const auto items = elements(expected);
   if (items.size() != 3) {
-    fail("expected " + expected + ", got a list of " + std::to_string(items.size()) +
-         " values (need exactly 3)");
+    fail("expected " + expected + ", got a list of " + std::to_string(items.size()) + " values (need exactly 3)");
   }
-  return {items[0].positiveNumber(expected), items[1].positiveNumber(expected),
-          items[2].positiveNumber(expected)};
+  return {items[0].positiveNumber(expected), items[1].positiveNumber(expected), items[2].positiveNumber(expected)};
 }
 
 }  // namespace pmdplan

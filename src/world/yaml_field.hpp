@@ -13,7 +13,7 @@
 namespace pmdplan {
 
 class YamlField {
-public:
+ public:
   /// The document root of `file` (the name errors report).
   YamlField(std::string file, YAML::Node root);
 
@@ -28,8 +28,7 @@ public:
 
   /// Requires a map whose keys are plain scalars, each allowed and none repeated; `expected`
   /// describes the allowed form for the messages, `unknownKeyLabel` names what a stray key is.
-  void requireMapWithKeys(std::initializer_list<std::string_view> allowed,
-                          const std::string& expected,
+  void requireMapWithKeys(std::initializer_list<std::string_view> allowed, const std::string& expected,
                           const std::string& unknownKeyLabel = "unknown key") const;
   /// Requires a map and returns its entries in file order, rejecting repeated keys (yaml-cpp keeps
   /// both entries of a repeated key and answers lookups with the first, so we check ourselves).
@@ -51,7 +50,7 @@ public:
   Eigen::Vector3d vector3(const std::string& expected) const;
   Eigen::Vector3d positiveVector3(const std::string& expected) const;
 
-private:
+ private:
   YamlField(std::string file, std::string path, YAML::Node node);
   YamlField at(std::string path, YAML::Node node) const { return {file_, std::move(path), node}; }
 

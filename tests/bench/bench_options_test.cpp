@@ -51,7 +51,8 @@ TEST(BenchOptions, RejectsZeroOrNegativeRuns) {
 }
 
 TEST(BenchOptions, RejectsTimeLimitsThatAreNotPositiveFiniteSeconds) {
-  for (const double limit : {0.0, -1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+  for (const double limit :
+       {0.0, -1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
     BenchOptions o;
     o.timeLimit = limit;
     expectInputError([&] { checkBenchOptions(o); }, "", "--time-limit", "positive");

@@ -11,7 +11,7 @@ namespace {
 const std::string kSynergyFile = std::string(PMDPLAN_TEST_DATA_DIR) + "/synergies/sah_tx90_default.yaml";
 
 class BenchmarkRun : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() {
     synergies_ = new SynergyModel(loadSynergyModel(kSynergyFile));
     bench_ = new TaskBench(loadTaskByName("can_on_table"), CheckerKind::Exact, 0.001, *synergies_, kSynergyFile);
@@ -111,8 +111,9 @@ TEST_F(BenchmarkRun, AnOmplPlannerSolvesInAForkedChildAndTheSameSeedGivesTheSame
   // machine; the sanitizer build (clang -O1, ASan + UBSan) ran out of 30 s with the exact checker.
   parameters.timeLimit = 120.0;
   const auto once = [&] {
-    return runInChildProcess([&] { return encodeRunRecord(runPlannerOnce(*bench_, *findPlanner("ompl:RRTConnect"), 0, parameters)); },
-                             300.0);
+    return runInChildProcess(
+        [&] { return encodeRunRecord(runPlannerOnce(*bench_, *findPlanner("ompl:RRTConnect"), 0, parameters)); },
+        300.0);
   };
   const ChildOutcome first = once(), second = once();
   ASSERT_TRUE(first.finished()) << first.problem;

@@ -14,7 +14,8 @@ namespace {
 TEST(CampaignJournal, KeepsRecordsAcrossRanksAndReopenings) {
   test::TempDir dir;
   BenchOptions options;
-  const RunRecord a = test::successfulRun("can_on_table", "pmd", 0, 0.25), b = test::failedRun("can_on_table", "pmd", 1, "not solved: time limit");
+  const RunRecord a = test::successfulRun("can_on_table", "pmd", 0, 0.25),
+                  b = test::failedRun("can_on_table", "pmd", 1, "not solved: time limit");
   {
     CampaignJournal rank0(dir.path() / "j", options, 0), rank1(dir.path() / "j", options, 1);
     rank0.append(0, a);

@@ -41,7 +41,12 @@ TEST(ForkedRun, AnExceptionBecomesAFailureWithItsMessage) {
 #endif
 
 TEST(ForkedRun, ACrashIsReportedWithItsSignal) {
-  const auto outcome = runInChildProcess([]() -> std::string { std::raise(SIGSEGV); return "unreachable"; }, 30.0);
+  const auto outcome = runInChildProcess(
+      []() -> std::string {
+        std::raise(SIGSEGV);
+        return "unreachable";
+      },
+      30.0);
 #ifdef PMDPLAN_UNDER_ASAN
   EXPECT_EQ(outcome.kind, ChildOutcome::Kind::Failed);
   EXPECT_EQ(outcome.problem, "error: the run ended without a result (exit code 1)");
@@ -53,7 +58,12 @@ TEST(ForkedRun, ACrashIsReportedWithItsSignal) {
 
 TEST(ForkedRun, AChildPastTheDeadlineIsKilled) {
   const auto began = std::chrono::steady_clock::now();
-  const auto outcome = runInChildProcess([] { ::sleep(30); return std::string("late"); }, 0.3);
+  const auto outcome = runInChildProcess(
+      [] {
+        ::sleep(30);
+        return std::string("late");
+      },
+      0.3);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   EXPECT_EQ(outcome.kind, ChildOutcome::Kind::TimedOut);
   EXPECT_EQ(outcome.problem.rfind("killed: no result within", 0), 0u) << outcome.problem;

@@ -86,10 +86,12 @@ TEST(JointCoupling, KnownValuesOfHandMadeMotions) {
   // middle_proximal and ring_proximal (Fig. 7: positive, both flexion) move together by d: the pair
   // gives 2d^2 against d^2 + d^2; middle_proximal also sits in the pair with ring_abduction, which
   // stays: 0 against d^2. C = 2d^2 / 3d^2.
-  EXPECT_NEAR(jointCoupling({rest, moved(sah, {{"middle_proximal", 0.1}, {"ring_proximal", 0.1}})}, sah.space, *reference),
-              2.0 / 3.0, 1e-12);
-  EXPECT_NEAR(jointCoupling({rest, moved(sah, {{"middle_proximal", 0.1}, {"ring_proximal", -0.1}})}, sah.space, *reference),
-              -2.0 / 3.0, 1e-12);
+  EXPECT_NEAR(
+      jointCoupling({rest, moved(sah, {{"middle_proximal", 0.1}, {"ring_proximal", 0.1}})}, sah.space, *reference),
+      2.0 / 3.0, 1e-12);
+  EXPECT_NEAR(
+      jointCoupling({rest, moved(sah, {{"middle_proximal", 0.1}, {"ring_proximal", -0.1}})}, sah.space, *reference),
+      -2.0 / 3.0, 1e-12);
   // Fig. 7's middle_proximal & ring_abduction is positive in the paper's signs, where flexion is
   // negative: in ours flexing the middle finger goes with closing the ring abduction. Alone in
   // motion: C = 2 s a b / (a^2 + b^2 + a^2 (with ring_proximal) + b^2 (with index_abduction)).
@@ -97,7 +99,8 @@ TEST(JointCoupling, KnownValuesOfHandMadeMotions) {
   EXPECT_NEAR(jointCoupling({rest, moved(sah, {{"middle_proximal", a}, {"ring_abduction", b}})}, sah.space, *reference),
               2.0 * a * -b / (2 * a * a + 2 * b * b), 1e-12);
   // Joints outside the pairs, and the arm, do not count; a still hand scores 0.
-  EXPECT_DOUBLE_EQ(jointCoupling({rest, moved(sah, {{"thumb_medium", 0.3}, {"arm", 0.3}})}, sah.space, *reference), 0.0);
+  EXPECT_DOUBLE_EQ(jointCoupling({rest, moved(sah, {{"thumb_medium", 0.3}, {"arm", 0.3}})}, sah.space, *reference),
+                   0.0);
 }
 
 TEST(JointCoupling, IsAnArcLengthIntegralSoSplittingASegmentChangesNothing) {
@@ -108,7 +111,8 @@ TEST(JointCoupling, IsAnArcLengthIntegralSoSplittingASegmentChangesNothing) {
   const Configuration b = moved(sah, {{"index_medium", 0.2}, {"middle_medium", 0.1}});
   const Configuration c = moved(sah, {{"index_abduction", 0.1}, {"ring_abduction", 0.1}});
   const Configuration halfway = a + 0.5 * (b - a);
-  EXPECT_NEAR(jointCoupling({a, b, c}, sah.space, *reference), jointCoupling({a, halfway, b, c}, sah.space, *reference), 1e-12);
+  EXPECT_NEAR(jointCoupling({a, b, c}, sah.space, *reference), jointCoupling({a, halfway, b, c}, sah.space, *reference),
+              1e-12);
 }
 
 TEST(IndependentHumanLikeness, AMotionAlongTheAuthorsSynergiesBeatsRandomJointMotion) {
@@ -146,7 +150,8 @@ TEST(IndependentHumanLikeness, AMotionAlongTheAuthorsSynergiesBeatsRandomJointMo
 TEST(IndependentHumanLikeness, AbsentWithoutTheSahHandJoints) {
   SahSpace sah;
   sah.space.joints[3].name = "other";
-  EXPECT_FALSE(measureHumanLikeness({sah.hand(kauthamSahSynergies().mean)}, sah.space, sah.model, sah.slots).independent);
+  EXPECT_FALSE(
+      measureHumanLikeness({sah.hand(kauthamSahSynergies().mean)}, sah.space, sah.model, sah.slots).independent);
 }
 
 }  // namespace

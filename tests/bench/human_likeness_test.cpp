@@ -55,8 +55,9 @@ TEST(HumanLikeness, MeansAreTakenAlongThePathAndTheMaximumAtItsWorstPosture) {
   // has 0, 0.125, ..., 0.5 on the first segment and four more points at 0.5 on the second.
   HumanLikenessOptions options;
   options.step = 0.125;
-  const auto longer = measureHumanLikeness({Toy::at(0.5, 0.5), Toy::at(0.5, 1.0), Configuration(Eigen::Vector3d(1.0, 1.0, 2.0))},
-                                           toy.space, toy.model, toy.slots, options);
+  const auto longer =
+      measureHumanLikeness({Toy::at(0.5, 0.5), Toy::at(0.5, 1.0), Configuration(Eigen::Vector3d(1.0, 1.0, 2.0))},
+                           toy.space, toy.model, toy.slots, options);
   EXPECT_NEAR(longer.subspaceDistanceMax, 0.5, 1e-12);
   EXPECT_NEAR(longer.subspaceDistanceMean, (0.0 + 0.125 + 0.25 + 0.375 + 0.5 + 4 * 0.5) / 9.0, 1e-12);
 }

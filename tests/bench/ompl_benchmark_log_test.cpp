@@ -72,7 +72,8 @@ ParsedLog parse(const std::string& text) {
   if (w.size() != 5 || w[3] != "random" || w[4] != "seed") throw std::runtime_error("seed line: " + line);
   log.seed = std::stoi(w[0]);
   w = next();
-  if (w.size() != 4 || w[1] != "seconds" || w[2] != "per" || w[3] != "run") throw std::runtime_error("time line: " + line);
+  if (w.size() != 4 || w[1] != "seconds" || w[2] != "per" || w[3] != "run")
+    throw std::runtime_error("time line: " + line);
   log.timeLimit = std::stod(w[0]);
   w = next();
   if (w.size() != 4 || w[1] != "MB") throw std::runtime_error("memory line: " + line);
@@ -99,7 +100,8 @@ ParsedLog parse(const std::string& text) {
     for (int i = 0; i < properties; ++i) {
       w = next();
       const std::string type = w.back();
-      if (type != "REAL" && type != "INTEGER" && type != "BOOLEAN" && type != "ENUM") throw std::runtime_error("type: " + line);
+      if (type != "REAL" && type != "INTEGER" && type != "BOOLEAN" && type != "ENUM")
+        throw std::runtime_error("type: " + line);
       std::string name;
       for (std::size_t k = 0; k + 1 < w.size(); ++k) name += (k ? "_" : "") + w[k];
       planner.properties.push_back(name);
@@ -149,8 +151,8 @@ TEST(OmplBenchmarkLog, ReadsBackByTheRulesOfOmplBenchmarkStatistics) {
   for (const auto& run : pmd.runs) EXPECT_EQ(run.size(), pmd.properties.size());
   EXPECT_EQ(valueOf(pmd, 0, "time"), "1.5");
   EXPECT_EQ(valueOf(pmd, 0, "solved"), "1");
-  EXPECT_EQ(valueOf(pmd, 0, "status"), "6");  // Exact solution
-  EXPECT_EQ(valueOf(pmd, 1, "status"), "4");  // Timeout
+  EXPECT_EQ(valueOf(pmd, 0, "status"), "6");          // Exact solution
+  EXPECT_EQ(valueOf(pmd, 1, "status"), "4");          // Timeout
   EXPECT_EQ(valueOf(pmd, 1, "solution_length"), "");  // read as NULL
   EXPECT_EQ(valueOf(pmd, 0, "simplification_time"), "0.15");
   EXPECT_EQ(valueOf(pmd, 0, "solution_segments"), "3");
@@ -162,8 +164,9 @@ TEST(OmplBenchmarkLog, ReadsBackByTheRulesOfOmplBenchmarkStatistics) {
 }
 
 TEST(OmplBenchmarkLog, ACrashAndAKillGetTheirStatus) {
-  const std::vector<RunRecord> records = {test::failedRun("t", "ompl:EST", 0, "crashed: signal 11 (Segmentation fault)"),
-                                          test::failedRun("t", "ompl:EST", 1, "killed: no result within 120 s")};
+  const std::vector<RunRecord> records = {
+      test::failedRun("t", "ompl:EST", 0, "crashed: signal 11 (Segmentation fault)"),
+      test::failedRun("t", "ompl:EST", 1, "killed: no result within 120 s")};
   const ParsedLog log = parse(omplBenchmarkLog(records, "t", {"ompl:EST"}, OmplLogContext{}));
   EXPECT_EQ(valueOf(log.planners[0], 0, "status"), "7");
   EXPECT_EQ(valueOf(log.planners[0], 1, "status"), "4");

@@ -1,16 +1,15 @@
 #include "pmdplan/bench/ompl_pmd_planner.hpp"
 
 #include <gtest/gtest.h>
-
-#include <filesystem>
-#include <fstream>
-
 #include <ompl/base/PlannerData.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "pmdplan/bench/ompl_task_space.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
@@ -30,8 +29,8 @@ struct CanOnTable {
   PlanningSpace space = planningSpaceFromRobot(*task.robot);
   CollisionChecking checking{task, CheckerKind::Fast};
   OmplTaskSpace omplSpace = makeOmplTaskSpace(space, checking.states(), checking.motions());
-  std::shared_ptr<const SynergyModel> synergies =
-      std::make_shared<const SynergyModel>(loadSynergyModel(std::string(PMDPLAN_TEST_DATA_DIR) + "/synergies/sah_tx90_default.yaml"));
+  std::shared_ptr<const SynergyModel> synergies = std::make_shared<const SynergyModel>(
+      loadSynergyModel(std::string(PMDPLAN_TEST_DATA_DIR) + "/synergies/sah_tx90_default.yaml"));
 
   og::SimpleSetup setup() const {
     og::SimpleSetup ss(omplSpace.spaceInformation);
@@ -43,7 +42,8 @@ struct CanOnTable {
   }
   std::vector<Configuration> configurations(const og::PathGeometric& path) const {
     std::vector<Configuration> points;
-    for (std::size_t i = 0; i < path.getStateCount(); ++i) points.push_back(configurationOfOmplState(space, path.getState(i)));
+    for (std::size_t i = 0; i < path.getStateCount(); ++i)
+      points.push_back(configurationOfOmplState(space, path.getState(i)));
     return points;
   }
 };
@@ -52,8 +52,9 @@ TEST(OmplPmdPlanner, SettingsAreOmplParameters) {
   CanOnTable p;
   OmplPmdPlanner planner(p.omplSpace.spaceInformation, p.space, HandSamplingMode::Synergy, p.synergies);
   EXPECT_EQ(planner.getName(), "PMD");
-  for (const char* name : {"initial_arm_half_size", "linear_arm_box_growth", "neighbour_count", "neighbour_threshold_factor", "arm_trials",
-                           "hand_trials", "min_sweep_visits", "max_samples", "smooth", "seed"})
+  for (const char* name :
+       {"initial_arm_half_size", "linear_arm_box_growth", "neighbour_count", "neighbour_threshold_factor", "arm_trials",
+        "hand_trials", "min_sweep_visits", "max_samples", "smooth", "seed"})
     EXPECT_TRUE(planner.params().hasParam(name)) << name;
   EXPECT_TRUE(planner.params().setParam("neighbour_count", "5"));
   EXPECT_TRUE(planner.params().setParam("arm_trials", "7"));
@@ -64,13 +65,17 @@ TEST(OmplPmdPlanner, SettingsAreOmplParameters) {
   std::string value;
   ASSERT_TRUE(planner.params().getParam("arm_trials", value));
   EXPECT_EQ(value, "7");
-  EXPECT_EQ(OmplPmdPlanner(p.omplSpace.spaceInformation, p.space, HandSamplingMode::FullSpace, nullptr).parameters().armTrials, 20);
+  EXPECT_EQ(OmplPmdPlanner(p.omplSpace.spaceInformation, p.space, HandSamplingMode::FullSpace, nullptr)
+                .parameters()
+                .armTrials,
+            20);
 }
 
 TEST(OmplPmdPlanner, SolvesThroughSimpleSetupWithAValidPathAndExportsItsRoadmap) {
   CanOnTable p;
   og::SimpleSetup ss = p.setup();
-  auto planner = std::make_shared<OmplPmdPlanner>(p.omplSpace.spaceInformation, p.space, HandSamplingMode::Synergy, p.synergies);
+  auto planner =
+      std::make_shared<OmplPmdPlanner>(p.omplSpace.spaceInformation, p.space, HandSamplingMode::Synergy, p.synergies);
   planner->params().setParam("seed", "3");
   ss.setPlanner(planner);
   ASSERT_EQ(ss.solve(30.0), ob::PlannerStatus::EXACT_SOLUTION);
@@ -100,7 +105,8 @@ TEST(OmplPmdPlanner, RunsInOmplsBenchmarkBesideRRTConnect) {
   CanOnTable p;
   og::SimpleSetup ss = p.setup();
   ompl::tools::Benchmark benchmark(ss, "can_on_table");
-  benchmark.addPlanner(std::make_shared<OmplPmdPlanner>(p.omplSpace.spaceInformation, p.space, HandSamplingMode::Synergy, p.synergies));
+  benchmark.addPlanner(
+      std::make_shared<OmplPmdPlanner>(p.omplSpace.spaceInformation, p.space, HandSamplingMode::Synergy, p.synergies));
   benchmark.addPlanner(std::make_shared<og::RRTConnect>(p.omplSpace.spaceInformation));
   std::size_t validPmdPaths = 0;
   std::vector<double> pmdPathLengths;

@@ -21,8 +21,9 @@ TEST(PlannerRoster, HoldsOursAndTheSevenOmplPlannersOnceEach) {
     }
   }
   EXPECT_EQ(ompl, 14);  // each of the seven with OMPL's sampling and with PMD sampling
-  for (const char* name : {"pmd", "full", "ompl:RRTConnect", "ompl:PRM", "ompl:LazyPRM", "ompl:KPIECE1", "ompl:BKPIECE1",
-                           "ompl:EST", "ompl:RRT", "ompl:RRTConnect@pmd", "ompl:PRM@pmd", "ompl:RRT@pmd"})
+  for (const char* name :
+       {"pmd", "full", "ompl:RRTConnect", "ompl:PRM", "ompl:LazyPRM", "ompl:KPIECE1", "ompl:BKPIECE1", "ompl:EST",
+        "ompl:RRT", "ompl:RRTConnect@pmd", "ompl:PRM@pmd", "ompl:RRT@pmd"})
     EXPECT_TRUE(findPlanner(name).has_value()) << name;
 }
 

@@ -15,9 +15,9 @@ std::size_t count(const std::string& text, const std::string& part) {
 
 TEST(PlanningTimePlot, OneBoxPerPlannerAndTaskOnALogAxisWithTheLimit) {
   const std::vector<RunRecord> records = {
-      test::successfulRun("a", "pmd", 0, 0.5), test::successfulRun("a", "pmd", 1, 2.0), test::successfulRun("a", "pmd", 2, 1.0),
-      test::failedRun("a", "ompl:RRT", 0, "not solved: Timeout"), test::successfulRun("b", "pmd", 0, 0.02),
-      test::failedRun("b", "ompl:RRT", 0, "crashed: signal 11")};
+      test::successfulRun("a", "pmd", 0, 0.5),  test::successfulRun("a", "pmd", 1, 2.0),
+      test::successfulRun("a", "pmd", 2, 1.0),  test::failedRun("a", "ompl:RRT", 0, "not solved: Timeout"),
+      test::successfulRun("b", "pmd", 0, 0.02), test::failedRun("b", "ompl:RRT", 0, "crashed: signal 11")};
   const std::string svg = planningTimeBoxPlotSvg(records, {"a", "b"}, {"pmd", "ompl:RRT"}, 60.0);
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
   EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");

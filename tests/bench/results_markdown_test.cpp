@@ -29,20 +29,25 @@ TEST(ResultsMarkdown, OneTablePerTaskWithPlannersAsColumnsAndMetricsAsRows) {
 }
 
 TEST(ResultsMarkdown, TheSummaryComparesEveryPlannerWithPmd) {
-  const std::vector<RunRecord> records = {
-      test::successfulRun("can_on_table", "pmd", 0, 0.002), test::successfulRun("can_on_table", "pmd", 1, 0.004),
-      test::successfulRun("can_on_table", "full", 0, 0.009), test::successfulRun("can_on_table", "ompl:RRT", 0, 0.5),
-      test::failedRun("can_on_table", "ompl:RRT", 1, "not solved: Timeout"), test::successfulRun("can_on_table", "ompl:EST", 0, 0.03),
-      test::successfulRun("can_on_table", "ompl:EST", 1, 0.09)};
+  const std::vector<RunRecord> records = {test::successfulRun("can_on_table", "pmd", 0, 0.002),
+                                          test::successfulRun("can_on_table", "pmd", 1, 0.004),
+                                          test::successfulRun("can_on_table", "full", 0, 0.009),
+                                          test::successfulRun("can_on_table", "ompl:RRT", 0, 0.5),
+                                          test::failedRun("can_on_table", "ompl:RRT", 1, "not solved: Timeout"),
+                                          test::successfulRun("can_on_table", "ompl:EST", 0, 0.03),
+                                          test::successfulRun("can_on_table", "ompl:EST", 1, 0.09)};
   const std::string md = benchMarkdown(records, {"can_on_table"}, {"pmd", "full", "ompl:RRT", "ompl:EST"});
-  EXPECT_NE(md.find("| task | pmd | full | ompl:RRT | ompl:EST | full / pmd | best OMPL planner | best OMPL / pmd |"), std::string::npos)
-      << md;
-  // Medians in ms with the successes; EST (2 of 2) beats the faster-looking RRT (1 of 2).
-  EXPECT_NE(md.find("| can_on_table | 3.00 ms (2/2) | 9.00 ms (1/1) | 500 ms (1/2) | 60.0 ms (2/2) | 3.00 | EST | 20.00 |"),
+  EXPECT_NE(md.find("| task | pmd | full | ompl:RRT | ompl:EST | full / pmd | best OMPL planner | best OMPL / pmd |"),
             std::string::npos)
       << md;
+  // Medians in ms with the successes; EST (2 of 2) beats the faster-looking RRT (1 of 2).
+  EXPECT_NE(
+      md.find("| can_on_table | 3.00 ms (2/2) | 9.00 ms (1/1) | 500 ms (1/2) | 60.0 ms (2/2) | 3.00 | EST | 20.00 |"),
+      std::string::npos)
+      << md;
   EXPECT_LT(md.find("### Summary"), md.find("### can_on_table"));
-  EXPECT_EQ(benchMarkdown(records, {"can_on_table"}, {"ompl:RRT"}).find("### Summary"), std::string::npos) << "only with pmd";
+  EXPECT_EQ(benchMarkdown(records, {"can_on_table"}, {"ompl:RRT"}).find("### Summary"), std::string::npos)
+      << "only with pmd";
 }
 
 }  // namespace

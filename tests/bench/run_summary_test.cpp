@@ -8,9 +8,10 @@ namespace pmdplan {
 namespace {
 
 TEST(RunSummary, MeanAndMedianOverSuccessesOnlyAndSuccessRateOverAllRuns) {
-  std::vector<RunRecord> records = {test::successfulRun("t", "pmd", 0, 1.0), test::successfulRun("t", "pmd", 1, 2.0),
-                                    test::successfulRun("t", "pmd", 2, 6.0), test::failedRun("t", "pmd", 3, "not solved: time_limit"),
-                                    test::successfulRun("other", "pmd", 0, 100.0), test::successfulRun("t", "full", 0, 50.0)};
+  std::vector<RunRecord> records = {
+      test::successfulRun("t", "pmd", 0, 1.0),       test::successfulRun("t", "pmd", 1, 2.0),
+      test::successfulRun("t", "pmd", 2, 6.0),       test::failedRun("t", "pmd", 3, "not solved: time_limit"),
+      test::successfulRun("other", "pmd", 0, 100.0), test::successfulRun("t", "full", 0, 50.0)};
   RunRecord invalid = test::successfulRun("t", "pmd", 4, 1000.0);
   invalid.valid = false;
   records.push_back(invalid);

@@ -16,8 +16,7 @@ using test::quoted;
 using test::runCli;
 
 // The CI form of the campaign: short, on the exact checker (the same answers as the fast one).
-const std::string kCampaign =
-    "bench can_on_table --planners pmd,ompl:RRTConnect --runs 4 --seed 1 --time-limit 20";
+const std::string kCampaign = "bench can_on_table --planners pmd,ompl:RRTConnect --runs 4 --seed 1 --time-limit 20";
 
 /// The CSV without its timing columns (planning_time_s, smoothing_time_s: the 6th and 7th).
 std::string withoutTimings(const std::string& csv) {
@@ -26,8 +25,10 @@ std::string withoutTimings(const std::string& csv) {
   for (std::string line; std::getline(in, line);) {
     std::vector<std::string> fields(1);
     for (const char c : line) {
-      if (c == ',') fields.emplace_back();
-      else fields.back() += c;
+      if (c == ',')
+        fields.emplace_back();
+      else
+        fields.back() += c;
     }
     for (std::size_t i = 0; i < fields.size(); ++i)
       if (i != 5 && i != 6) result += fields[i] + (i + 1 < fields.size() ? "," : "");
@@ -80,11 +81,12 @@ TEST(BenchCli, WritesEveryOutputAndTheOmplLogLoadsWhenTheReaderIsInstalled) {
   test::TempDir dir;
   const auto csv = dir.path() / "runs.csv", md = dir.path() / "table.md", log = dir.path() / "runs.log",
              plot = dir.path() / "time.svg";
-  const auto result = runCli(dir, "bench can_on_table --planners pmd,ompl:RRTConnect --runs 2 --time-limit 20 --csv " +
-                                      quoted(csv) + " --markdown " + quoted(md) + " --ompl-log " + quoted(log) + " --plot " +
-                                      quoted(plot));
+  const auto result =
+      runCli(dir, "bench can_on_table --planners pmd,ompl:RRTConnect --runs 2 --time-limit 20 --csv " + quoted(csv) +
+                      " --markdown " + quoted(md) + " --ompl-log " + quoted(log) + " --plot " + quoted(plot));
   ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
-  EXPECT_NE(result.out.find("| success (solved and valid) | 2/2 (100 %) | 2/2 (100 %) |"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("| success (solved and valid) | 2/2 (100 %) | 2/2 (100 %) |"), std::string::npos)
+      << result.out;
   EXPECT_EQ(contents(md), result.out.substr(0, contents(md).size()));
   EXPECT_EQ(contents(csv).rfind("task,planner,run,seed,solved,planning_time_s,smoothing_time_s,", 0), 0u);
   EXPECT_NE(contents(log).find("geometric_RRTConnect\n"), std::string::npos);
@@ -95,9 +97,10 @@ TEST(BenchCli, WritesEveryOutputAndTheOmplLogLoadsWhenTheReaderIsInstalled) {
   if (std::system("command -v ompl_benchmark_statistics >/dev/null 2>&1") != 0) return;
   const auto db = dir.path() / "runs.db";
   ASSERT_EQ(std::system(("ompl_benchmark_statistics " + quoted(log) + " -d " + quoted(db) + " >/dev/null").c_str()), 0);
-  const std::string query = "python3 -c \"import sqlite3,sys; c=sqlite3.connect(sys.argv[1]); "
-                            "sys.exit(0 if c.execute('select count(*) from runs where solved=1').fetchone()[0]==4 else 1)\" " +
-                            quoted(db);
+  const std::string query =
+      "python3 -c \"import sqlite3,sys; c=sqlite3.connect(sys.argv[1]); "
+      "sys.exit(0 if c.execute('select count(*) from runs where solved=1').fetchone()[0]==4 else 1)\" " +
+      quoted(db);
   EXPECT_EQ(std::system(query.c_str()), 0);
 }
 
@@ -107,7 +110,8 @@ TEST(BenchCli, WritesEveryOutputAndTheOmplLogLoadsWhenTheReaderIsInstalled) {
 TEST(BenchCli, AJournalledCampaignResumesWhereItStopped) {
   test::TempDir dir;
   const auto journal = dir.path() / "journal", first = dir.path() / "first.csv", again = dir.path() / "again.csv";
-  const std::string campaign = "bench can_on_table --planners pmd --runs 3 --time-limit 20 --journal " + quoted(journal);
+  const std::string campaign =
+      "bench can_on_table --planners pmd --runs 3 --time-limit 20 --journal " + quoted(journal);
   ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(first)).exitCode, 0);
   const std::string lines = contents(journal / "rank0.tsv");
   ASSERT_EQ(std::count(lines.begin(), lines.end(), '\n'), 4) << lines;  // the campaign's line, then 3 runs
@@ -137,7 +141,8 @@ TEST(BenchCli, AJournalledCampaignResumesWhereItStopped) {
 TEST(BenchCli, AReportShowsAJournalsFinishedRunsAndRunsNothing) {
   test::TempDir dir;
   const auto journal = dir.path() / "journal", full = dir.path() / "full.csv";
-  const std::string campaign = "bench can_on_table --planners pmd,full --runs 2 --time-limit 20 --journal " + quoted(journal);
+  const std::string campaign =
+      "bench can_on_table --planners pmd,full --runs 2 --time-limit 20 --journal " + quoted(journal);
   ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(full)).exitCode, 0);
   std::istringstream in(contents(journal / "rank0.tsv"));
   std::string header, run0, run1, run2;
@@ -146,13 +151,14 @@ TEST(BenchCli, AReportShowsAJournalsFinishedRunsAndRunsNothing) {
   const std::string before = contents(journal / "rank0.tsv");
 
   const auto csv = dir.path() / "part.csv", markdown = dir.path() / "part.md", plot = dir.path() / "part.svg";
-  const auto result =
-      runCli(dir, campaign + " --report --csv " + quoted(csv) + " --markdown " + quoted(markdown) + " --plot " + quoted(plot));
+  const auto result = runCli(
+      dir, campaign + " --report --csv " + quoted(csv) + " --markdown " + quoted(markdown) + " --plot " + quoted(plot));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_EQ(contents(journal / "rank0.tsv"), before) << "a report adds nothing to the journal";
   std::istringstream fullRows(contents(full));
   std::string fullHeader, pmd0, pmd1, full0, full1;
-  std::getline(fullRows, fullHeader), std::getline(fullRows, pmd0), std::getline(fullRows, pmd1), std::getline(fullRows, full0);
+  std::getline(fullRows, fullHeader), std::getline(fullRows, pmd0), std::getline(fullRows, pmd1),
+      std::getline(fullRows, full0);
   EXPECT_EQ(contents(csv), fullHeader + "\n" + pmd0 + "\n" + full0 + "\n") << "the two finished runs, timings and all";
   const std::string tables = contents(markdown);
   EXPECT_NE(tables.find("Partial campaign: 2 of 4 runs finished"), std::string::npos) << tables;
@@ -160,8 +166,8 @@ TEST(BenchCli, AReportShowsAJournalsFinishedRunsAndRunsNothing) {
   EXPECT_NE(contents(plot).find("<svg"), std::string::npos);
 
   expectBadInput("bench can_on_table --planners pmd --runs 2 --report", "--report", "needs --journal");
-  expectBadInput("bench can_on_table --planners pmd --runs 2 --report --journal " + quoted(dir.path() / "none"), "--journal",
-                 "no such journal folder");
+  expectBadInput("bench can_on_table --planners pmd --runs 2 --report --journal " + quoted(dir.path() / "none"),
+                 "--journal", "no such journal folder");
 }
 
 #ifdef PMDPLAN_MPIEXEC
@@ -172,8 +178,8 @@ TEST(BenchCli, TwoMpiRanksGiveTheOneProcessCsvTimingsAside) {
   ASSERT_EQ(one.exitCode, 0) << one.out << one.err;
   // As root OpenMPI wants --allow-run-as-root; --oversubscribe lets 2 ranks run on any machine.
   const std::string launcher = std::string(PMDPLAN_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") +
-                               " --oversubscribe -np 2 " + quoted(PMDPLAN_CLI_PATH) + " " + kCampaign + " --csv " + quoted(split) +
-                               " >" + quoted(dir.path() / "mpi.out") + " 2>&1";
+                               " --oversubscribe -np 2 " + quoted(PMDPLAN_CLI_PATH) + " " + kCampaign + " --csv " +
+                               quoted(split) + " >" + quoted(dir.path() / "mpi.out") + " 2>&1";
   ASSERT_EQ(std::system(launcher.c_str()), 0) << contents(dir.path() / "mpi.out");
   EXPECT_NE(contents(dir.path() / "mpi.out").find("8 runs in"), std::string::npos);
   const std::string a = contents(single), b = contents(split);

@@ -15,9 +15,9 @@ namespace {
 
 using ::testing::HasSubstr;
 
+using test::CliResult;
 using test::contents;
 using test::quoted;
-using test::CliResult;
 using test::runCli;
 
 const std::filesystem::path kGloveData = std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "glove";
@@ -39,22 +39,31 @@ TEST(GloveCli, SynthWritesARecordingAndItsCalibrationBothMarkedSynthetic) {
 TEST(GloveCli, SameSeedGivesByteIdenticalFiles) {
   test::TempDir dir;
   ASSERT_EQ(runCli(dir, "glove synth --frames 500 --seed 9 -o " + quoted(dir.path() / "a.csv") + " --calibration-out " +
-                            quoted(dir.path() / "cal.yaml")).exitCode, 0);
+                            quoted(dir.path() / "cal.yaml"))
+                .exitCode,
+            0);
   const std::string first = contents(dir.path() / "a.csv");
   const std::string firstCalibration = contents(dir.path() / "cal.yaml");
   ASSERT_EQ(runCli(dir, "glove synth --frames 500 --seed 9 -o " + quoted(dir.path() / "a.csv") + " --calibration-out " +
-                            quoted(dir.path() / "cal.yaml")).exitCode, 0);
+                            quoted(dir.path() / "cal.yaml"))
+                .exitCode,
+            0);
   EXPECT_EQ(contents(dir.path() / "a.csv"), first);
   EXPECT_EQ(contents(dir.path() / "cal.yaml"), firstCalibration);
-  ASSERT_EQ(runCli(dir, "glove synth --frames 500 --seed 10 -o " + quoted(dir.path() / "a.csv") + " --calibration-out " +
-                            quoted(dir.path() / "cal.yaml")).exitCode, 0);
+  ASSERT_EQ(runCli(dir, "glove synth --frames 500 --seed 10 -o " + quoted(dir.path() / "a.csv") +
+                            " --calibration-out " + quoted(dir.path() / "cal.yaml"))
+                .exitCode,
+            0);
   EXPECT_NE(contents(dir.path() / "a.csv"), first);
 }
 
 TEST(GloveCli, TheShippedSampleRecordingRegeneratesIdentically) {
   test::TempDir dir;
-  ASSERT_EQ(runCli(dir, "glove synth --frames 200 --seed 1 -o " + quoted(dir.path() / "synthetic_operator_sample.csv")).exitCode, 0);
-  EXPECT_EQ(contents(dir.path() / "synthetic_operator_sample.csv"), contents(kGloveData / "synthetic_operator_sample.csv"));
+  ASSERT_EQ(runCli(dir, "glove synth --frames 200 --seed 1 -o " + quoted(dir.path() / "synthetic_operator_sample.csv"))
+                .exitCode,
+            0);
+  EXPECT_EQ(contents(dir.path() / "synthetic_operator_sample.csv"),
+            contents(kGloveData / "synthetic_operator_sample.csv"));
   EXPECT_EQ(contents(dir.path() / "synthetic_operator_sample.calibration.yaml"),
             contents(kGloveData / "synthetic_operator_sample.calibration.yaml"));
 }
@@ -63,13 +72,15 @@ TEST(GloveCli, ConvertsBetweenCsvAndTheSerialStream) {
   test::TempDir dir;
   const auto stream = dir.path() / "sample.bin";
   const auto back = dir.path() / "back.csv";
-  const auto toStream = runCli(dir, "glove convert " + quoted(kGloveData / "synthetic_operator_sample.csv") + " -o " + quoted(stream));
+  const auto toStream =
+      runCli(dir, "glove convert " + quoted(kGloveData / "synthetic_operator_sample.csv") + " -o " + quoted(stream));
   ASSERT_EQ(toStream.exitCode, 0) << toStream.err;
   EXPECT_EQ(std::filesystem::file_size(stream), 200u * 24u);
   ASSERT_EQ(runCli(dir, "glove convert " + quoted(stream) + " -o " + quoted(back)).exitCode, 0);
   // The stream carries no times or notes; the sensor columns come back unchanged.
   const std::string original = contents(kGloveData / "synthetic_operator_sample.csv");
-  const std::string firstRow = original.substr(original.find("\n0,") + 3, original.find('\n', original.find("\n0,") + 1) - original.find("\n0,") - 3);
+  const std::string firstRow = original.substr(
+      original.find("\n0,") + 3, original.find('\n', original.find("\n0,") + 1) - original.find("\n0,") - 3);
   const std::string converted = contents(back);
   EXPECT_THAT(converted, HasSubstr("ThumbRotate,ThumbMPJ"));
   EXPECT_THAT(converted, HasSubstr("\n" + firstRow + "\n"));
@@ -86,7 +97,8 @@ TEST(GloveCli, BadInputExitsWith2AndNamesThePlace) {
   result = runCli(dir, "glove convert " + quoted(broken) + " -o " + quoted(dir.path() / "out.csv"));
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_THAT(result.err, HasSubstr("pmdplan: error: " + broken.string() + ": reply 2 (byte 24): truncated reply"));
-  result = runCli(dir, "glove convert " + quoted(kGloveData / "synthetic_operator_sample.csv") + " -o " + quoted(dir.path() / "out.dat"));
+  result = runCli(dir, "glove convert " + quoted(kGloveData / "synthetic_operator_sample.csv") + " -o " +
+                           quoted(dir.path() / "out.dat"));
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_THAT(result.err, HasSubstr("cannot tell the format"));
 }

@@ -38,7 +38,8 @@ const std::filesystem::path kGloveData = std::filesystem::path(PMDPLAN_TEST_DATA
 const std::filesystem::path kSample = kGloveData / "synthetic_operator_sample.csv";
 const std::filesystem::path kCalibration = kGloveData / "synthetic_operator_sample.calibration.yaml";
 
-pid_t spawn(const std::vector<std::string>& arguments, const std::filesystem::path& out, const std::filesystem::path& err) {
+pid_t spawn(const std::vector<std::string>& arguments, const std::filesystem::path& out,
+            const std::filesystem::path& err) {
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int outFd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -80,10 +81,11 @@ bool eventually(const std::function<bool()>& condition, std::chrono::millisecond
 
 /// socat's two pseudo-terminals: `glove` is the test's end, `host` the one pmdplan opens.
 class GloveLine {
-public:
+ public:
   explicit GloveLine(const test::TempDir& dir) : glove_(dir.path() / "glove"), host_(dir.path() / "host") {
-    socat_ = spawn({"socat", "-d", "-d", "pty,raw,echo=0,link=" + glove_.string(), "pty,raw,echo=0,link=" + host_.string()},
-                   dir.path() / "socat.out", dir.path() / "socat.err");
+    socat_ =
+        spawn({"socat", "-d", "-d", "pty,raw,echo=0,link=" + glove_.string(), "pty,raw,echo=0,link=" + host_.string()},
+              dir.path() / "socat.out", dir.path() / "socat.err");
     if (!eventually([&] { return std::filesystem::exists(glove_) && std::filesystem::exists(host_); }))
       throw std::runtime_error("socat made no pseudo-terminal pair: " + contents(dir.path() / "socat.err"));
     fd_ = ::open(glove_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
@@ -120,7 +122,7 @@ public:
     socat_ = 0;
   }
 
-private:
+ private:
   std::filesystem::path glove_, host_;
   pid_t socat_ = 0;
   int fd_ = -1;
@@ -162,7 +164,10 @@ std::vector<std::vector<std::string>> rows(const std::filesystem::path& file) {
   bool header = true;
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
-    if (header) { header = false; continue; }
+    if (header) {
+      header = false;
+      continue;
+    }
     std::vector<std::string> cells;
     std::istringstream cellStream(line);
     for (std::string cell; std::getline(cellStream, cell, ',');) cells.push_back(cell);
@@ -174,7 +179,9 @@ std::vector<std::vector<std::string>> rows(const std::filesystem::path& file) {
 /// What the offline path makes of these frames: calibration, the shipped mapping, the SAH hand.
 Eigen::MatrixXd offlinePostures(const GloveRecording& recording) {
   const JointLimits hand = RobotModel::loadByNameOrPath("sah_tx90").groupJoints("hand");
-  return mapToJoints(calibrate(recording, loadGloveCalibration(kCalibration)), loadHandMapping(defaultHandMappingPath()), hand).postures;
+  return mapToJoints(calibrate(recording, loadGloveCalibration(kCalibration)),
+                     loadHandMapping(defaultHandMappingPath()), hand)
+      .postures;
 }
 
 void expectPostures(const std::filesystem::path& file, const Eigen::MatrixXd& expected) {
@@ -192,9 +199,10 @@ TEST(GloveStreamCli, RecordsFromAPseudoTerminalExactlyWhatTheOfflinePathGivesFor
   test::TempDir dir;
   GloveLine line(dir);
   const GloveRecording sent = sampleFrames(60);
-  const auto stream = startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 5 --frames 60 --calibration " +
-                                           kCalibration.string() + " -o " + (dir.path() / "rec.csv").string() + " --raw-out " +
-                                           (dir.path() / "raw.csv").string());
+  const auto stream =
+      startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 5 --frames 60 --calibration " +
+                           kCalibration.string() + " -o " + (dir.path() / "rec.csv").string() + " --raw-out " +
+                           (dir.path() / "raw.csv").string());
   waitUntilStreaming(stream);
   line.trickle(formatGloveSerialStream(sent));
   ASSERT_EQ(waitFor(stream.pid, 20s), 0) << stream.stderrText();
@@ -208,8 +216,9 @@ TEST(GloveStreamCli, AGloveThatAnswersEachRequestIsPolledWithG) {
   test::TempDir dir;
   GloveLine line(dir);
   const GloveRecording frames = sampleFrames(15);
-  const auto stream = startStream(dir, "--device " + line.host().string() + " --poll-rate 200 --timeout 5 --frames 15 --calibration " +
-                                           kCalibration.string() + " -o " + (dir.path() / "rec.csv").string());
+  const auto stream =
+      startStream(dir, "--device " + line.host().string() + " --poll-rate 200 --timeout 5 --frames 15 --calibration " +
+                           kCalibration.string() + " -o " + (dir.path() / "rec.csv").string());
   // The glove: one reply per 'G' it is sent.
   std::size_t answered = 0;
   const auto until = std::chrono::steady_clock::now() + 15s;
@@ -233,8 +242,9 @@ TEST(GloveStreamCli, UnpluggingMidStreamEndsCleanlyWithAMessageAndKeepsTheRecord
   GloveLine line(dir);
   const GloveRecording sent = sampleFrames(20);
   const auto output = dir.path() / "rec.csv";
-  const auto stream = startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 30 --calibration " +
-                                           kCalibration.string() + " -o " + output.string());
+  const auto stream =
+      startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 30 --calibration " +
+                           kCalibration.string() + " -o " + output.string());
   waitUntilStreaming(stream);
   line.trickle(formatGloveSerialStream(sent));
   ASSERT_TRUE(eventually([&] { return rows(dir.path() / "rec.csv.partial").size() == 20; })) << stream.stderrText();
@@ -263,12 +273,14 @@ TEST(GloveStreamCli, GarbageBetweenRepliesIsSkippedAndTheStreamResynchronises) {
   std::string zeroed = replies.substr(4 * reply, reply);
   zeroed[5] = '\0';
   bytes += zeroed + replies.substr(4 * reply, 2 * reply);
-  const auto stream = startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 5 --frames 5 --calibration " +
-                                           kCalibration.string() + " --raw-out " + (dir.path() / "raw.csv").string());
+  const auto stream =
+      startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 5 --frames 5 --calibration " +
+                           kCalibration.string() + " --raw-out " + (dir.path() / "raw.csv").string());
   waitUntilStreaming(stream);
   line.trickle(bytes, 5);
   ASSERT_EQ(waitFor(stream.pid, 10s), 0) << stream.stderrText();
-  const std::vector<GloveFrame> expected{sent.frames[0], sent.frames[2], sent.frames[3], sent.frames[4], sent.frames[5]};
+  const std::vector<GloveFrame> expected{sent.frames[0], sent.frames[2], sent.frames[3], sent.frames[4],
+                                         sent.frames[5]};
   EXPECT_EQ(readGloveCsv(dir.path() / "raw.csv").frames, expected);
   EXPECT_THAT(stream.stdoutText(), HasSubstr("skipped "));
 }
@@ -276,8 +288,9 @@ TEST(GloveStreamCli, GarbageBetweenRepliesIsSkippedAndTheStreamResynchronises) {
 TEST(GloveStreamCli, BytesThatHoldNoReplyAreAClearErrorNamingTheDevice) {
   test::TempDir dir;
   GloveLine line(dir);
-  const auto stream = startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 5 --calibration " +
-                                           kCalibration.string() + " -o " + (dir.path() / "rec.csv").string());
+  const auto stream =
+      startStream(dir, "--device " + line.host().string() + " --poll-rate 0 --timeout 5 --calibration " +
+                           kCalibration.string() + " -o " + (dir.path() / "rec.csv").string());
   waitUntilStreaming(stream);
   line.trickle(std::string(400, '\x55'), 50);
   EXPECT_EQ(waitFor(stream.pid, 10s), 2);
@@ -293,8 +306,8 @@ TEST(GloveStreamCli, BytesThatHoldNoReplyAreAClearErrorNamingTheDevice) {
 TEST(GloveStreamCli, AGloveThatNeverSendsTimesOutWithAMessage) {
   test::TempDir dir;
   GloveLine line(dir);
-  const auto stream = startStream(dir, "--device " + line.host().string() + " --timeout 0.5 --calibration " + kCalibration.string() +
-                                           " -o " + (dir.path() / "rec.csv").string());
+  const auto stream = startStream(dir, "--device " + line.host().string() + " --timeout 0.5 --calibration " +
+                                           kCalibration.string() + " -o " + (dir.path() / "rec.csv").string());
   EXPECT_EQ(waitFor(stream.pid, 10s), 2);
   EXPECT_THAT(stream.stderrText(), HasSubstr("no 'G' reply in the first 0.5 s of the stream"));
   EXPECT_THAT(stream.stderrText(), HasSubstr(line.host().string()));
@@ -303,8 +316,8 @@ TEST(GloveStreamCli, AGloveThatNeverSendsTimesOutWithAMessage) {
 TEST(GloveStreamCli, ANonTerminalDeviceAndAMissingCalibrationAreInputErrors) {
   test::TempDir dir;
   const auto file = dir.write("plain.bin", "G");
-  auto result = test::runCli(dir, "glove stream --device " + quoted(file) + " --calibration " + quoted(kCalibration) + " -o " +
-                                      quoted(dir.path() / "rec.csv"));
+  auto result = test::runCli(dir, "glove stream --device " + quoted(file) + " --calibration " + quoted(kCalibration) +
+                                      " -o " + quoted(dir.path() / "rec.csv"));
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_THAT(result.err, HasSubstr("not a serial device"));
   EXPECT_THAT(result.err, HasSubstr("--replay"));
@@ -314,8 +327,8 @@ TEST(GloveStreamCli, ANonTerminalDeviceAndAMissingCalibrationAreInputErrors) {
   result = test::runCli(dir, "glove stream --replay " + quoted(kSample));
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_THAT(result.err, HasSubstr("nothing to do"));
-  result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " -o " + quoted(dir.path() / "a.csv") + " --raw-out " +
-                                 quoted(dir.path() / "a.csv"));
+  result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " -o " + quoted(dir.path() / "a.csv") +
+                                 " --raw-out " + quoted(dir.path() / "a.csv"));
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_THAT(result.err, HasSubstr("must be two files"));
   result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " -o " + quoted(kSample));
@@ -327,7 +340,8 @@ TEST(GloveStreamCli, ANonTerminalDeviceAndAMissingCalibrationAreInputErrors) {
 TEST(GloveStreamCli, AReplayPlaysAtItsRecordedRateAndCanBeFilteredOntoThePmds) {
   test::TempDir dir;
   const auto started = std::chrono::steady_clock::now();
-  auto result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " --frames 30 -o " + quoted(dir.path() / "rec.csv"));
+  auto result = test::runCli(
+      dir, "glove stream --replay " + quoted(kSample) + " --frames 30 -o " + quoted(dir.path() / "rec.csv"));
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_GE(elapsed, 0.29);  // frame 30 is recorded at 0.29 s: a replay does not run ahead of its recording
@@ -337,19 +351,21 @@ TEST(GloveStreamCli, AReplayPlaysAtItsRecordedRateAndCanBeFilteredOntoThePmds) {
   expectPostures(dir.path() / "rec.csv", plain);
   EXPECT_EQ(rows(dir.path() / "rec.csv")[29][0], "0.29");
 
-  result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " --speed 100 --frames 30 --project-pmds 2 -o " +
-                                 quoted(dir.path() / "filtered.csv"));
+  result = test::runCli(dir, "glove stream --replay " + quoted(kSample) +
+                                 " --speed 100 --frames 30 --project-pmds 2 -o " + quoted(dir.path() / "filtered.csv"));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const auto modelFile = defaultSynergyModelPath("sah_tx90");
-  const PmdPostureFilter filter(loadSynergyModel(modelFile), RobotModel::loadByNameOrPath("sah_tx90").groupJoints("hand"), 2,
-                                modelFile.string(), "--project-pmds");
+  const PmdPostureFilter filter(loadSynergyModel(modelFile),
+                                RobotModel::loadByNameOrPath("sah_tx90").groupJoints("hand"), 2, modelFile.string(),
+                                "--project-pmds");
   Eigen::MatrixXd filtered = plain;
   for (Eigen::Index f = 0; f < plain.rows(); ++f) filtered.row(f) = filter.filter(plain.row(f).transpose()).transpose();
   expectPostures(dir.path() / "filtered.csv", filtered);
   EXPECT_GT((filtered - plain).cwiseAbs().maxCoeff(), 1e-3);  // two PMDs do not hold the whole posture
   EXPECT_THAT(contents(dir.path() / "filtered.csv"), HasSubstr("first 2 PMDs of sah_tx90_default.yaml"));
 
-  result = test::runCli(dir, "glove stream --replay " + quoted(kSample) + " --project-pmds 99 -o " + quoted(dir.path() / "x.csv"));
+  result = test::runCli(
+      dir, "glove stream --replay " + quoted(kSample) + " --project-pmds 99 -o " + quoted(dir.path() / "x.csv"));
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_THAT(result.err, HasSubstr("--project-pmds"));
 }

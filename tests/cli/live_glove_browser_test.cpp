@@ -25,8 +25,8 @@ TEST(LiveGloveBrowser, APseudoTerminalGloveMovesTheHandOnThePage) {
   std::filesystem::remove_all(work);
   std::filesystem::create_directories(work);
   const auto glove = std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "glove";
-  const std::string command = "node " + quoted(kSourceTree / "viewer" / "test" / "live_glove_browser_test.mjs") + " --cli " +
-                              quoted(PMDPLAN_CLI_PATH) + " --calibration " +
+  const std::string command = "node " + quoted(kSourceTree / "viewer" / "test" / "live_glove_browser_test.mjs") +
+                              " --cli " + quoted(PMDPLAN_CLI_PATH) + " --calibration " +
                               quoted(glove / "synthetic_operator_sample.calibration.yaml") + " --sample " +
                               quoted(glove / "synthetic_operator_sample.csv") + " --work " + quoted(work) + " 2>&1";
   std::cout << "$ " << command << std::endl;

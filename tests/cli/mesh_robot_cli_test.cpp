@@ -31,7 +31,8 @@ TEST(MeshRobotCli, PlansAndValidatesWithBothCheckers) {
   ASSERT_EQ(check.exitCode, 0) << check.out << check.err;
   for (const std::string checker : {"fast", "exact"}) {
     const auto path = dir.path() / (checker + ".path.json");
-    const auto plan = runCli("plan " + quoted(task) + " --checker " + checker + " --seed 2 --time-limit 120 -o " + quoted(path));
+    const auto plan =
+        runCli("plan " + quoted(task) + " --checker " + checker + " --seed 2 --time-limit 120 -o " + quoted(path));
     ASSERT_EQ(plan.exitCode, 0) << checker << ": " << plan.out << plan.err;
     const auto validate = runCli("validate " + quoted(task) + " " + quoted(path) + " --json");
     ASSERT_EQ(validate.exitCode, 0) << checker << ": " << validate.out << validate.err;

@@ -41,19 +41,23 @@ TEST(OutputSafety, AnOutputInAMissingFolderIsBadInputAndReplacesNothing) {
   EXPECT_EQ(contents(good), "an earlier result\n");
 
   const auto recording = dir.write("rec.csv", "an earlier recording\n");
-  result = runCli(dir, "glove synth --frames 10 -o " + quoted(recording) + " --calibration-out " + quoted(dir.path() / "nodir/c.yaml"));
+  result = runCli(dir, "glove synth --frames 10 -o " + quoted(recording) + " --calibration-out " +
+                           quoted(dir.path() / "nodir/c.yaml"));
   expectExitTwoNaming(result, "nodir");
   EXPECT_EQ(contents(recording), "an earlier recording\n");
   expectExitTwoNaming(runCli(dir, "glove synth --frames 10 -o " + quoted(dir.path() / "nodir/x.csv")), "nodir");
 
   const auto model = dir.write("m.yaml", "an earlier model\n");
   const auto notAFolder = dir.write("plots", "a file where the plots folder should be\n");
-  result = runCli(dir, "synergies --show " + quoted(fs::path(PMDPLAN_TEST_DATA_DIR) / "synergies/sah_tx90_default.yaml") +
-                           " --plots " + quoted(notAFolder / "sub"));
+  result =
+      runCli(dir, "synergies --show " + quoted(fs::path(PMDPLAN_TEST_DATA_DIR) / "synergies/sah_tx90_default.yaml") +
+                      " --plots " + quoted(notAFolder / "sub"));
   expectExitTwoNaming(result, "--plots");
-  const auto xml = dir.write("e.xml", "<EigenGrasps dimensions=\"1\">\n<EG><EigenValue value=\"1\"/><DimVals d0=\"1\"/></EG>\n"
-                                      "<ORIGIN><EigenValue value=\"0\"/><DimVals d0=\"0\"/></ORIGIN>\n</EigenGrasps>\n");
-  result = runCli(dir, "synergies --from-graspit " + quoted(xml) + " --joints index_proximal -o " + quoted(dir.path() / "nodir/m.yaml"));
+  const auto xml = dir.write("e.xml",
+                             "<EigenGrasps dimensions=\"1\">\n<EG><EigenValue value=\"1\"/><DimVals d0=\"1\"/></EG>\n"
+                             "<ORIGIN><EigenValue value=\"0\"/><DimVals d0=\"0\"/></ORIGIN>\n</EigenGrasps>\n");
+  result = runCli(dir, "synergies --from-graspit " + quoted(xml) + " --joints index_proximal -o " +
+                           quoted(dir.path() / "nodir/m.yaml"));
   expectExitTwoNaming(result, "nodir");
   EXPECT_EQ(contents(model), "an earlier model\n");
   EXPECT_EQ(temporaries(dir.path()), 0);
@@ -76,8 +80,8 @@ TEST(OutputSafety, ASymbolicLinkIsWrittenThroughAndADeviceIsRefused) {
   test::TempDir dir;
   const auto real = dir.write("real.csv", "old\n");
   fs::create_symlink("real.csv", dir.path() / "link.csv");
-  const auto result = runCli(dir, "glove synth --frames 10 -o " + quoted(dir.path() / "link.csv") + " --calibration-out " +
-                                      quoted(dir.path() / "c.yaml"));
+  const auto result = runCli(dir, "glove synth --frames 10 -o " + quoted(dir.path() / "link.csv") +
+                                      " --calibration-out " + quoted(dir.path() / "c.yaml"));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(fs::is_symlink(dir.path() / "link.csv"));
   EXPECT_NE(contents(real).find("SYNTHETIC"), std::string::npos);

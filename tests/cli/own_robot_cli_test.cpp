@@ -25,7 +25,8 @@ void makeToyHand(const TempDir& dir, const std::string& options) {
 }
 
 constexpr const char* kArmJoints = "arm_yaw,arm_shoulder,arm_elbow,arm_wrist";
-constexpr const char* kHandZero = "thumb_rotate: 0, thumb_flex: 0, finger1_spread: 0, finger1_flex: 0, finger2_spread: 0, finger2_flex: 0";
+constexpr const char* kHandZero =
+    "thumb_rotate: 0, thumb_flex: 0, finger1_spread: 0, finger1_flex: 0, finger2_spread: 0, finger2_flex: 0";
 
 std::string armTask(const std::string& robot, const std::string& fixed) {
   return "name: toy_can\nrobot: " + robot + "\nbase: {xyz: [0, 0, 0], rpy_deg: [0, 0, 0]}\n" + fixed +
@@ -33,7 +34,9 @@ std::string armTask(const std::string& robot, const std::string& fixed) {
          "  - {name: table, box: [0.3, 0.5, 0.3], xyz: [0.55, 0, 0.15]}\n"
          "  - {name: lamp, sphere: 0.05, xyz: [0.3, 0.0, 0.74]}\n"
          "  - {name: can, cylinder: {radius: 0.02, length: 0.1}, xyz: [0.5, -0.005, 0.35]}\n"
-         "start: {joints_deg: {arm_yaw: 0, arm_shoulder: 0, arm_elbow: 0, arm_wrist: 0, " + kHandZero + "}}\n"
+         "start: {joints_deg: {arm_yaw: 0, arm_shoulder: 0, arm_elbow: 0, arm_wrist: 0, " +
+         kHandZero +
+         "}}\n"
          "goal: {joints_deg: {arm_yaw: 0, arm_shoulder: 35, arm_elbow: 70, arm_wrist: 90, thumb_rotate: 0, "
          "thumb_flex: 20, finger1_spread: 0, finger1_flex: 20, finger2_spread: 0, finger2_flex: 20}}\n";
 }
@@ -48,8 +51,8 @@ void planAndValidate(const TempDir& dir, const std::filesystem::path& task, cons
   ASSERT_EQ(check.exitCode, 0) << check.err;
   EXPECT_NE(check.out.find("straight segment start -> goal: in collision"), std::string::npos) << check.out;
   const auto path = dir.path() / "toy.path.json";
-  const auto plan = runCli(dir, "plan " + quoted(task) + packagePath + " --synergies " + quoted(dir.path() / "toy.yaml") +
-                                    " --time-limit 60 -o " + quoted(path));
+  const auto plan = runCli(dir, "plan " + quoted(task) + packagePath + " --synergies " +
+                                    quoted(dir.path() / "toy.yaml") + " --time-limit 60 -o " + quoted(path));
   ASSERT_EQ(plan.exitCode, 0) << plan.out << plan.err;
   const auto validate = runCli(dir, "validate " + quoted(task) + " " + quoted(path) + packagePath);
   EXPECT_EQ(validate.exitCode, 0) << validate.out << validate.err;
@@ -60,14 +63,16 @@ TEST(OwnRobotCli, RobotInitWritesWellFormedSrdfWithTheHomePoseFree) {
   makeToyHand(dir, "--relative-meshes");
   const auto urdf = dir.path() / "toy_hand/urdf/toy_hand.urdf";
   const auto srdf = dir.path() / "toy.srdf";
-  const auto init = runCli(dir, "robot init " + quoted(urdf) + " --arm " + kArmJoints + " --palm palm --samples 3000 -o " + quoted(srdf));
+  const auto init = runCli(
+      dir, "robot init " + quoted(urdf) + " --arm " + kArmJoints + " --palm palm --samples 3000 -o " + quoted(srdf));
   ASSERT_EQ(init.exitCode, 0) << init.err;
   EXPECT_NE(init.out.find("home pose free"), std::string::npos) << init.out;
   // Python's ElementTree must parse it; the wrist camera touches the palm at home only: Default.
   const std::string python =
       "python3 -c \"import sys, xml.etree.ElementTree as E; r = E.parse(sys.argv[1]).getroot(); "
       "print(sorted(g.get('name') for g in r.iter('group'))); "
-      "print([(d.get('link1'), d.get('link2')) for d in r.iter('disable_collisions') if d.get('reason') == 'Default'])\" " +
+      "print([(d.get('link1'), d.get('link2')) for d in r.iter('disable_collisions') if d.get('reason') == "
+      "'Default'])\" " +
       quoted(srdf) + " > " + quoted(dir.path() / "parsed.txt");
   ASSERT_EQ(std::system(python.c_str()), 0) << contents(srdf);
   const std::string parsed = contents(dir.path() / "parsed.txt");
@@ -85,7 +90,8 @@ TEST(OwnRobotCli, CollisionPairsOutputIsWellFormedXml) {
   const TempDir dir;
   makeToyHand(dir, "--relative-meshes");
   const auto urdf = dir.path() / "toy_hand/urdf/toy_hand.urdf";
-  ASSERT_EQ(runCli(dir, "robot init " + quoted(urdf) + " --arm " + kArmJoints + " --palm palm --samples 500").exitCode, 0);
+  ASSERT_EQ(runCli(dir, "robot init " + quoted(urdf) + " --arm " + kArmJoints + " --palm palm --samples 500").exitCode,
+            0);
   const auto pairs = runCli(dir, "collision-pairs " + quoted(urdf) + " --samples 500 --seed 2");
   ASSERT_EQ(pairs.exitCode, 0) << pairs.err;
   const std::string python = "python3 -c \"import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])\" " +
@@ -108,8 +114,8 @@ TEST(OwnRobotCli, WithoutAnSrdfTheErrorNamesRobotInit) {
 TEST(OwnRobotCli, PackageUrdfPlansThroughTheSearchPathAndItsEnvironmentVariable) {
   const TempDir dir;
   makeToyHand(dir, "--postures 300");
-  const auto init = runCli(dir, "robot init package://toy_hand/urdf/toy_hand.urdf --package-path " + quoted(dir.path()) +
-                                    " --arm " + kArmJoints + " --palm palm --samples 3000");
+  const auto init = runCli(dir, "robot init package://toy_hand/urdf/toy_hand.urdf --package-path " +
+                                    quoted(dir.path()) + " --arm " + kArmJoints + " --palm palm --samples 3000");
   ASSERT_EQ(init.exitCode, 0) << init.err;
   const auto task = dir.write("task.yaml", armTask("package://toy_hand/urdf/toy_hand.urdf", ""));
   // Without a search path: the error names the task, the field and the (empty) path tried.
@@ -133,11 +139,14 @@ TEST(OwnRobotCli, AHandAlonePlansAroundAnObstacle) {
   EXPECT_NE(init.out.find("groups hand (9 joints)"), std::string::npos) << init.out;
   const auto task = dir.write(
       "task.yaml",
-      std::string("name: toy_hand_alone\nrobot: toy_hand/urdf/toy_hand.urdf\nbase: {xyz: [0, 0, 0.5], rpy_deg: [0, 0, 0]}\n"
-                  "obstacles:\n  - {name: ball, sphere: 0.004, xyz: [0.0166, 0.0263, 0.612]}\n"
-                  "start: {joints_deg: {") + kHandZero + "}}\n"
-                  "goal: {joints_deg: {thumb_rotate: 30, thumb_flex: 5, finger1_spread: -10, finger1_flex: 15, "
-                  "finger2_spread: 10, finger2_flex: 15}}\n");
+      std::string(
+          "name: toy_hand_alone\nrobot: toy_hand/urdf/toy_hand.urdf\nbase: {xyz: [0, 0, 0.5], rpy_deg: [0, 0, 0]}\n"
+          "obstacles:\n  - {name: ball, sphere: 0.004, xyz: [0.0166, 0.0263, 0.612]}\n"
+          "start: {joints_deg: {") +
+          kHandZero +
+          "}}\n"
+          "goal: {joints_deg: {thumb_rotate: 30, thumb_flex: 5, finger1_spread: -10, finger1_flex: 15, "
+          "finger2_spread: 10, finger2_flex: 15}}\n");
   planAndValidate(dir, task, "");
 }
 
@@ -150,18 +159,21 @@ TEST(OwnRobotCli, HeldJointsStayWhereTheTaskPutsThem) {
   EXPECT_NE(init.out.find("joints in no group"), std::string::npos) << init.out;
   const std::string robot = "toy_hand/urdf/toy_hand.urdf";
   // Without `fixed:` the spare arm's joints are in no group: the error says how to hold them.
-  const auto unheld = runCli(dir, "plan " + quoted(dir.write("unheld.yaml", armTask(robot, ""))) + " --planner full --time-limit 5");
+  const auto unheld =
+      runCli(dir, "plan " + quoted(dir.write("unheld.yaml", armTask(robot, ""))) + " --planner full --time-limit 5");
   EXPECT_EQ(unheld.exitCode, 2);
   EXPECT_NE(unheld.err.find("fixed:"), std::string::npos) << unheld.err;
   // Held reaching into the planned arm: the start is in collision with the spare arm.
-  const auto blocking = dir.write("blocking.yaml", armTask(robot, "fixed: {joints_deg: {spare_yaw: 90, spare_shoulder: 60, "
-                                                                  "spare_elbow: 30, spare_wrist: 0, head_pan: 0}}\n"));
+  const auto blocking = dir.write("blocking.yaml", armTask(robot,
+                                                           "fixed: {joints_deg: {spare_yaw: 90, spare_shoulder: 60, "
+                                                           "spare_elbow: 30, spare_wrist: 0, head_pan: 0}}\n"));
   const auto blocked = runCli(dir, "check " + quoted(blocking));
   ASSERT_EQ(blocked.exitCode, 0) << blocked.err;
   EXPECT_NE(blocked.out.find("start  IN COLLISION"), std::string::npos) << blocked.out;
   EXPECT_NE(blocked.out.find("spare_"), std::string::npos) << blocked.out;
-  const auto held = dir.write("held.yaml", armTask(robot, "fixed: {joints_deg: {spare_yaw: 0, spare_shoulder: 30, "
-                                                          "spare_elbow: 45, spare_wrist: 0, head_pan: 20}}\n"));
+  const auto held = dir.write("held.yaml", armTask(robot,
+                                                   "fixed: {joints_deg: {spare_yaw: 0, spare_shoulder: 30, "
+                                                   "spare_elbow: 45, spare_wrist: 0, head_pan: 20}}\n"));
   planAndValidate(dir, held, "");
   EXPECT_EQ(contents(dir.path() / "toy.path.json").find("spare_"), std::string::npos);
   // The viewer poses the held joints where the task holds them and gets the robot's meshes.
@@ -182,13 +194,17 @@ TEST(OwnRobotCli, PostureCsvErrorsNameTheFileTheLineAndTheFix) {
   const auto urdf = dir.path() / "toy_hand/urdf/toy_hand.urdf";
   ASSERT_EQ(runCli(dir, "robot init " + quoted(urdf) + " --palm palm --samples 200").exitCode, 0);
   const std::string robot = " --robot " + quoted(urdf);
-  const auto noColumn = runCli(dir, "synergies --postures " + quoted(dir.write("a.csv", "thumb_rotate,thumb_flex\n1,2\n")) + robot);
+  const auto noColumn =
+      runCli(dir, "synergies --postures " + quoted(dir.write("a.csv", "thumb_rotate,thumb_flex\n1,2\n")) + robot);
   EXPECT_EQ(noColumn.exitCode, 2);
-  EXPECT_NE(noColumn.err.find("a.csv: line 1: no column for hand joint 'finger1_spread'"), std::string::npos) << noColumn.err;
+  EXPECT_NE(noColumn.err.find("a.csv: line 1: no column for hand joint 'finger1_spread'"), std::string::npos)
+      << noColumn.err;
   const std::string header = "thumb_rotate,thumb_flex,finger1_spread,finger1_flex,finger2_spread,finger2_flex\n";
-  const auto outside = runCli(dir, "synergies --postures " + quoted(dir.write("b.csv", header + "0,0,0,0,0,0\n0,120,0,0,0,0\n")) + robot);
+  const auto outside = runCli(
+      dir, "synergies --postures " + quoted(dir.write("b.csv", header + "0,0,0,0,0,0\n0,120,0,0,0,0\n")) + robot);
   EXPECT_EQ(outside.exitCode, 2);
-  EXPECT_NE(outside.err.find("b.csv: line 3, column thumb_flex: 120 deg is outside the joint limits 0 .. 90 deg"), std::string::npos)
+  EXPECT_NE(outside.err.find("b.csv: line 3, column thumb_flex: 120 deg is outside the joint limits 0 .. 90 deg"),
+            std::string::npos)
       << outside.err;
   // No own-axis joint named: the output says which option picks one.
   const auto fitted = runCli(dir, "synergies --postures " + quoted(dir.path() / "toy_hand_postures.csv") + robot);

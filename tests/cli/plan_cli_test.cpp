@@ -101,7 +101,8 @@ start: {joints: {x: -0.5, y: -0.5, spin: 0}}
 goal: {joints: {x: 0.5, y: 0.5, spin: 1}}
 )");
   const auto started = std::chrono::steady_clock::now();
-  const auto result = runCli("plan " + quoted(task) + " --planner full --time-limit 2 -o " + quoted(dir.path() / "p.json"));
+  const auto result =
+      runCli("plan " + quoted(task) + " --planner full --time-limit 2 -o " + quoted(dir.path() / "p.json"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   EXPECT_EQ(result.exitCode, 1) << result.out << result.err;
   EXPECT_NE(result.out.find("not solved (time_limit)"), std::string::npos) << result.out;

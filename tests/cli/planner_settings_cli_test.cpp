@@ -26,8 +26,8 @@ TEST(PlannerSettingsCli, BothHelpsListEverySettingOfTheTable) {
 }
 
 TEST(PlannerSettingsCli, BadValuesGiveTheSameErrorInPlanAndBench) {
-  const std::string cases[] = {"--rho-a nan", "--neighbours 0", "--kappa -2", "--rho-a-growth fast", "--preset fastest",
-                               "--time-limit 1e10", "--max-pmds 1.5"};
+  const std::string cases[] = {"--rho-a nan",      "--neighbours 0",    "--kappa -2",    "--rho-a-growth fast",
+                               "--preset fastest", "--time-limit 1e10", "--max-pmds 1.5"};
   for (const std::string& arguments : cases) {
     const test::TempDir dir;
     const auto plan = runCli(dir, "plan can_on_table " + arguments + " -o " + test::quoted(dir.path() / "p.json"));
@@ -45,7 +45,8 @@ TEST(PlannerSettingsCli, BadValuesGiveTheSameErrorInPlanAndBench) {
 TEST(PlannerSettingsCli, SettingsChangeTheRunAndAreDeterministic) {
   const test::TempDir dir;
   const auto run = [&](const std::string& settings) {
-    const auto r = runCli(dir, "plan can_on_table --seed 3 --json " + settings + " -o " + test::quoted(dir.path() / "p.json"));
+    const auto r =
+        runCli(dir, "plan can_on_table --seed 3 --json " + settings + " -o " + test::quoted(dir.path() / "p.json"));
     EXPECT_EQ(r.exitCode, 0) << settings << ": " << r.err;
     auto json = nlohmann::json::parse(r.out);
     json.erase("planning_time_s");

@@ -19,9 +19,9 @@ namespace {
 
 using ::testing::HasSubstr;
 
+using test::CliResult;
 using test::contents;
 using test::quoted;
-using test::CliResult;
 using test::runCli;
 
 const std::filesystem::path kData = PMDPLAN_TEST_DATA_DIR;
@@ -39,7 +39,7 @@ double correlation(const nlohmann::json& result, const std::string& a, const std
 }
 
 class PaperSizedSyntheticRecording : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() {
     dir_ = new test::TempDir;
     recording_ = dir_->path() / "sah_tx90_synthetic_seed1.csv";
@@ -102,10 +102,15 @@ TEST_F(PaperSizedSyntheticRecording, RegeneratesTheShippedDefaultModelByteForByt
 TEST(SynergiesCli, TheSerialStreamGivesTheSameModelAsTheCsv) {
   test::TempDir dir;
   const auto stream = dir.path() / "sample.bin";
-  ASSERT_EQ(runCli(dir, "glove convert " + quoted(kData / "glove" / "synthetic_operator_sample.csv") + " -o " + quoted(stream)).exitCode, 0);
-  const auto fromStream = runCli(dir, "synergies " + quoted(stream) + " --calibration " + quoted(kSampleCalibration) + " --json");
+  ASSERT_EQ(runCli(dir, "glove convert " + quoted(kData / "glove" / "synthetic_operator_sample.csv") + " -o " +
+                            quoted(stream))
+                .exitCode,
+            0);
+  const auto fromStream =
+      runCli(dir, "synergies " + quoted(stream) + " --calibration " + quoted(kSampleCalibration) + " --json");
   ASSERT_EQ(fromStream.exitCode, 0) << fromStream.err;
-  const auto fromCsv = runCli(dir, "synergies " + quoted(kData / "glove" / "synthetic_operator_sample.csv") + " --json");
+  const auto fromCsv =
+      runCli(dir, "synergies " + quoted(kData / "glove" / "synthetic_operator_sample.csv") + " --json");
   ASSERT_EQ(fromCsv.exitCode, 0) << fromCsv.err;
   const auto a = nlohmann::json::parse(fromStream.out), b = nlohmann::json::parse(fromCsv.out);
   EXPECT_EQ(a["frames"], 200);
@@ -132,8 +137,9 @@ TEST(SynergiesCli, ImportsGraspItEigengrasps) {
 </EigenGrasps>
 )");
   const auto model = dir.path() / "imported.yaml";
-  const auto run = runCli(dir, "synergies --from-graspit " + quoted(xml) +
-                                   " --joints index_proximal,middle_proximal,ring_proximal -o " + quoted(model) + " --json");
+  const auto run =
+      runCli(dir, "synergies --from-graspit " + quoted(xml) +
+                      " --joints index_proximal,middle_proximal,ring_proximal -o " + quoted(model) + " --json");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto result = nlohmann::json::parse(run.out);
   EXPECT_EQ(result["directions"].size(), 2u);
@@ -188,7 +194,8 @@ TEST(SynergiesCliBadInput, NonNumericCell) {
 TEST(SynergiesCliBadInput, RawValueOutside0To255) {
   test::TempDir dir;
   const auto file = dir.write("rec.csv", sensorHeader() + frameRow(0, "300"));
-  expectError(analyse(dir, file), file.string() + ": line 2, column ThumbRotate: 300 is outside the raw sensor range 0-255");
+  expectError(analyse(dir, file),
+              file.string() + ": line 2, column ThumbRotate: 300 is outside the raw sensor range 0-255");
 }
 
 TEST(SynergiesCliBadInput, EmptyFile) {
@@ -201,24 +208,28 @@ TEST(SynergiesCliBadInput, FewerFramesThanJoints) {
   test::TempDir dir;
   const auto recording = dir.path() / "short.csv";
   ASSERT_EQ(runCli(dir, "glove synth --frames 6 -o " + quoted(recording)).exitCode, 0);
-  expectError(runCli(dir, "synergies " + quoted(recording)), recording.string() + ": lines 6-11: 6 frames for 11 joints in the PCA");
+  expectError(runCli(dir, "synergies " + quoted(recording)),
+              recording.string() + ": lines 6-11: 6 frames for 11 joints in the PCA");
 }
 
 TEST(SynergiesCliBadInput, ConstantDataSet) {
   test::TempDir dir;
   std::string text = sensorHeader();
-  for (int f = 0; f < 40; ++f) text += std::to_string(f) + ",120" + std::string(frameRow(0)).substr(frameRow(0).find(",100,") + 4);
+  for (int f = 0; f < 40; ++f)
+    text += std::to_string(f) + ",120" + std::string(frameRow(0)).substr(frameRow(0).find(",100,") + 4);
   const auto file = dir.write("still.csv", text);
   expectError(analyse(dir, file), file.string() + ": lines 2-41: constant data set");
 }
 
 TEST(SynergiesCliBadInput, NonOrthonormalDirectionsInASynergyFile) {
   test::TempDir dir;
-  const auto file = dir.write("model.yaml",
-                              "joints:\n  - {name: a, lower: 0, upper: 1}\n  - {name: b, lower: 0, upper: 1}\nmean: [0.5, 0.5]\n"
-                              "directions:\n  - {sigma: 0.2, variance_fraction: 0.8, vector: [1, 0]}\n"
-                              "  - {sigma: 0.1, variance_fraction: 0.2, vector: [0.6, 0.8]}\n");
-  expectError(runCli(dir, "synergies --show " + quoted(file)), file.string() + ": line 7 (directions[1]): directions 1 and 2 are not orthonormal");
+  const auto file =
+      dir.write("model.yaml",
+                "joints:\n  - {name: a, lower: 0, upper: 1}\n  - {name: b, lower: 0, upper: 1}\nmean: [0.5, 0.5]\n"
+                "directions:\n  - {sigma: 0.2, variance_fraction: 0.8, vector: [1, 0]}\n"
+                "  - {sigma: 0.1, variance_fraction: 0.2, vector: [0.6, 0.8]}\n");
+  expectError(runCli(dir, "synergies --show " + quoted(file)),
+              file.string() + ": line 7 (directions[1]): directions 1 and 2 are not orthonormal");
 }
 
 TEST(SynergiesCliBadInput, UnknownSensorInAMapping) {

@@ -14,8 +14,8 @@
 namespace pmdplan {
 namespace {
 
-using ::testing::HasSubstr;
 using test::runCli;
+using ::testing::HasSubstr;
 
 const std::filesystem::path kData = PMDPLAN_TEST_DATA_DIR;
 
@@ -25,7 +25,8 @@ using test::quoted;
 TEST(SynergyPlotsCli, ARecordingGivesBothFiguresBesideItsUsualOutput) {
   test::TempDir dir;
   const auto plots = dir.path() / "plots";
-  const auto result = runCli("synergies " + quoted(kData / "glove" / "synthetic_operator_sample.csv") + " --json --plots " + quoted(plots));
+  const auto result = runCli("synergies " + quoted(kData / "glove" / "synthetic_operator_sample.csv") +
+                             " --json --plots " + quoted(plots));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_NO_THROW((void)nlohmann::json::parse(result.out)) << "the figures do not disturb the JSON on stdout";
   EXPECT_THAT(result.err, HasSubstr("joint_pairs.svg"));
@@ -38,7 +39,8 @@ TEST(SynergyPlotsCli, ARecordingGivesBothFiguresBesideItsUsualOutput) {
 TEST(SynergyPlotsCli, AModelFileGivesTheVarianceFigure) {
   test::TempDir dir;
   const auto plots = dir.path() / "plots";
-  const auto result = runCli("synergies --show " + quoted(kData / "synergies" / "sah_tx90_default.yaml") + " --plots " + quoted(plots));
+  const auto result =
+      runCli("synergies --show " + quoted(kData / "synergies" / "sah_tx90_default.yaml") + " --plots " + quoted(plots));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(plots / "cumulative_variance.svg"));
   EXPECT_FALSE(std::filesystem::exists(plots / "joint_pairs.svg"));

@@ -40,8 +40,10 @@ TEST(TrajectoryCli, PlanWritesATimedTrajectoryWithinTheLimitsAndFreeOfCollision)
   EXPECT_LT((points.back().position - task.goal).norm(), 1e-9);
   for (const TimedState& point : points)
     for (std::size_t j = 0; j < limits.size(); ++j) {
-      EXPECT_LE(std::abs(point.velocity[static_cast<Eigen::Index>(j)]), limits[j].velocity * (1.0 + 1e-4)) << limits[j].name;
-      EXPECT_LE(std::abs(point.acceleration[static_cast<Eigen::Index>(j)]), limits[j].acceleration * (1.0 + 5e-3)) << limits[j].name;
+      EXPECT_LE(std::abs(point.velocity[static_cast<Eigen::Index>(j)]), limits[j].velocity * (1.0 + 1e-4))
+          << limits[j].name;
+      EXPECT_LE(std::abs(point.acceleration[static_cast<Eigen::Index>(j)]), limits[j].acceleration * (1.0 + 5e-3))
+          << limits[j].name;
     }
   // The CSV holds the same samples.
   const std::string csv = contents(dir.path() / "can_on_table.trajectory.csv");
@@ -66,14 +68,17 @@ TEST(TrajectoryCli, PlanWritesATimedTrajectoryWithinTheLimitsAndFreeOfCollision)
   const TimedPathInspection inspection = inspectTimedPath(timed, exact, SweptDistanceBound(*task.robot), 0.001);
   EXPECT_TRUE(inspection.free);
   EXPECT_GT(inspection.statesChecked, 100);
-  std::printf("can_on_table seed 1: %.3f s, %zu points, blend tolerance %g, %ld states checked with the exact checker\n",
-              timed.duration(), points.size(), file.blendTolerance, inspection.statesChecked);
+  std::printf(
+      "can_on_table seed 1: %.3f s, %zu points, blend tolerance %g, %ld states checked with the exact checker\n",
+      timed.duration(), points.size(), file.blendTolerance, inspection.statesChecked);
 }
 
 TEST(TrajectoryCli, TimeWritesTheSameTrajectoryAsPlanAndRejectsBadOptions) {
   test::TempDir dir;
   const auto path = dir.path() / "p.path.json";
-  ASSERT_EQ(runCli("plan can_on_table --seed 2 -o " + quoted(path) + " --trajectory " + quoted(dir.path() / "a.json")).exitCode, 0);
+  ASSERT_EQ(runCli("plan can_on_table --seed 2 -o " + quoted(path) + " --trajectory " + quoted(dir.path() / "a.json"))
+                .exitCode,
+            0);
   const auto timed = runCli("time " + quoted(path) + " -o " + quoted(dir.path() / "b.json"));
   ASSERT_EQ(timed.exitCode, 0) << timed.out << timed.err;
   EXPECT_EQ(contents(dir.path() / "a.json"), contents(dir.path() / "b.json"));

@@ -6,7 +6,6 @@
 // table; the viewer does not care), so they do not depend on the planner.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -28,8 +27,8 @@
 namespace pmdplan {
 namespace {
 
-using ::testing::HasSubstr;
 using test::runCli;
+using ::testing::HasSubstr;
 
 const std::filesystem::path kSourceTree = std::filesystem::path(PMDPLAN_TEST_DATA_DIR).parent_path();
 const std::filesystem::path kBuildDirectory = std::filesystem::path(PMDPLAN_CLI_PATH).parent_path();
@@ -66,13 +65,13 @@ nlohmann::json viewerData(const std::filesystem::path& folder) {
 }
 
 class ViewCli : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() { task_ = new Task(loadTaskByName("can_on_table")); }
   static void TearDownTestSuite() { delete task_; }
   static const Task& task() { return *task_; }
   test::TempDir dir_;
 
-private:
+ private:
   static Task* task_;
 };
 Task* ViewCli::task_ = nullptr;
@@ -84,7 +83,8 @@ TEST_F(ViewCli, WritesAFolderWithTheSceneThePathAndTheSynergyReadout) {
   const auto result = runCli("view " + quoted(pathFile) + " --out " + quoted(out));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_THAT(result.out, HasSubstr("index.html"));
-  for (const char* file : {"index.html", "pmdplan-viewer.js", "viewer.css", "THIRD_PARTY_NOTICES.txt", "viewer-data.js"})
+  for (const char* file :
+       {"index.html", "pmdplan-viewer.js", "viewer.css", "THIRD_PARTY_NOTICES.txt", "viewer-data.js"})
     EXPECT_TRUE(std::filesystem::is_regular_file(out / file)) << file;
 
   const nlohmann::json data = viewerData(out);
@@ -150,21 +150,24 @@ TEST_F(ViewCli, APathThatDoesNotFitTheRobotIsOneClearErrorAndNoFolder) {
     std::string message;
   };
   const std::vector<Case> cases{
-      {"renamed joint", [](PathFile& p) { p.jointNames[2] = "elbow"; }, "joint_names", "not joints of the robot: elbow; missing: tx90_joint_3"},
+      {"renamed joint", [](PathFile& p) { p.jointNames[2] = "elbow"; }, "joint_names",
+       "not joints of the robot: elbow; missing: tx90_joint_3"},
       {"joint left out",
        [](PathFile& p) {
          p.jointNames.pop_back();
          for (auto& q : p.points) q = Configuration(q.head(q.size() - 1));
        },
        "joint_names", "expected the 19 active joints of robot 'sah_tx90', found 18 names; missing: ring_medium"},
-      {"outside a limit", [](PathFile& p) { p.points[1][0] = 4.0; }, "points[1].positions[0]", "tx90_joint_1 = 4 is outside its limits"},
+      {"outside a limit", [](PathFile& p) { p.points[1][0] = 4.0; }, "points[1].positions[0]",
+       "tx90_joint_1 = 4 is outside its limits"},
       {"other coupling", [](PathFile& p) { coupling(p, "index_distal").multiplier = 0.5; }, "mimic.index_distal",
        "expected [\"index_medium\", 1, 0] as in robot 'sah_tx90', found [\"index_medium\", 0.5, 0]"},
-      {"coupling left out", [](PathFile& p) {
+      {"coupling left out",
+       [](PathFile& p) {
          const MimicRelation gone = coupling(p, "ring_distal");  // a copy: erase must not read a moved element
          std::erase(p.mimic, gone);
-       }, "mimic",
-       "couples joints the file leaves out: ring_distal"},
+       },
+       "mimic", "couples joints the file leaves out: ring_distal"},
   };
   for (const Case& c : cases) {
     PathFile path = straightPath(task(), 3);

@@ -16,13 +16,20 @@
 namespace pmdplan {
 namespace {
 
-using ::testing::HasSubstr;
 using test::contents;
 using test::quoted;
 using test::runCli;
+using ::testing::HasSubstr;
 
 PathFile endsOnly(const Task& task) {
-  return PathFile{task.name, "test", 1, task.robot->activeJointNames(), {task.start, task.goal}, std::nullopt, mimicRelations(*task.robot), {}};
+  return PathFile{task.name,
+                  "test",
+                  1,
+                  task.robot->activeJointNames(),
+                  {task.start, task.goal},
+                  std::nullopt,
+                  mimicRelations(*task.robot),
+                  {}};
 }
 
 nlohmann::json viewerDocument(const std::filesystem::path& folder) {
@@ -89,7 +96,8 @@ TEST(ViewInputCli, AnOverflowingNumberIsBadInput) {
   text.replace(at, text.find(',', at) - at, "1e999");
   dir.write("big.json", text);
   for (const std::string command : {"view ", "validate can_on_table ", "time "}) {
-    const auto result = runCli(command + quoted(file) + (command == "view " ? " --out " + quoted(dir.path() / "v") : ""));
+    const auto result =
+        runCli(command + quoted(file) + (command == "view " ? " --out " + quoted(dir.path() / "v") : ""));
     EXPECT_EQ(result.exitCode, 2) << command << result.err;
     EXPECT_THAT(result.err, HasSubstr(file.string() + ": a number is out of range")) << command;
   }

@@ -16,15 +16,16 @@
 namespace pmdplan {
 namespace {
 
-using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using test::contents;
 using test::quoted;
 using test::runCli;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
 
 /// `waypoints` evenly spaced points from the task's start to its goal, "planned" by `planner`.
 PathFile straightPath(const Task& task, int waypoints, const std::string& planner, std::uint64_t seed = 1) {
-  PathFile path{task.name, planner, seed, task.robot->activeJointNames(), {}, std::nullopt, mimicRelations(*task.robot), {}};
+  PathFile path{task.name, planner, seed, task.robot->activeJointNames(), {}, std::nullopt, mimicRelations(*task.robot),
+                {}};
   for (int i = 0; i < waypoints; ++i)
     path.points.push_back(task.start + (task.goal - task.start) * (static_cast<double>(i) / (waypoints - 1)));
   return path;
@@ -50,21 +51,24 @@ std::vector<std::string> csvRow(const std::string& csv, const std::string& prefi
   std::vector<std::string> fields(1);
   bool quoted = false;
   for (const char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) fields.emplace_back();
-    else fields.back() += c;
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      fields.emplace_back();
+    else
+      fields.back() += c;
   }
   return fields;
 }
 
 class ViewPathsCli : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() { task_ = new Task(loadTaskByName("can_on_table")); }
   static void TearDownTestSuite() { delete task_; }
   static const Task& task() { return *task_; }
   test::TempDir dir_;
 
-private:
+ private:
   static Task* task_;
 };
 Task* ViewPathsCli::task_ = nullptr;
@@ -97,7 +101,8 @@ TEST_F(ViewPathsCli, TwoPathsOfOneTaskAreBothInTheViewerData) {
   EXPECT_EQ(second["clearance"].size(), states.size());
   EXPECT_EQ(second["colliding_links"].size(), states.size());
   ASSERT_EQ(data["warnings"].size(), 1u);
-  EXPECT_THAT(data["warnings"][0].get<std::string>(), StartsWith("b.json: the path's last point is not task can_on_table's goal"));
+  EXPECT_THAT(data["warnings"][0].get<std::string>(),
+              StartsWith("b.json: the path's last point is not task can_on_table's goal"));
 
   // One path alone keeps the single-path document: no overlays, no names.
   ASSERT_EQ(runCli("view " + quoted(a) + " --out " + quoted(dir_.path() / "one")).exitCode, 0);
@@ -113,8 +118,9 @@ TEST_F(ViewPathsCli, PathsOfDifferentTasksOrRobotsAreRefusedNamingTheFile) {
   const auto out = dir_.path() / "v";
   const auto result = runCli("view " + quoted(a) + " " + quoted(b) + " --out " + quoted(out));
   EXPECT_EQ(result.exitCode, 2) << result.out << result.err;
-  EXPECT_THAT(result.err, HasSubstr("pmdplan: error: " + b.string() + ": task: the path was planned for task 't_in_clutter', but " +
-                                    a.string() + " for task 'can_on_table'; expected paths of one task"));
+  EXPECT_THAT(result.err,
+              HasSubstr("pmdplan: error: " + b.string() + ": task: the path was planned for task 't_in_clutter', but " +
+                        a.string() + " for task 'can_on_table'; expected paths of one task"));
   EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written";
   // --task does not make them one task either.
   EXPECT_EQ(runCli("view " + quoted(a) + " " + quoted(b) + " --task can_on_table --out " + quoted(out)).exitCode, 2);
@@ -126,7 +132,8 @@ TEST_F(ViewPathsCli, PathsOfDifferentTasksOrRobotsAreRefusedNamingTheFile) {
   writePathFile(c, otherRobot);
   const auto robot = runCli("view " + quoted(a) + " " + quoted(c) + " --out " + quoted(out));
   EXPECT_EQ(robot.exitCode, 2);
-  EXPECT_THAT(robot.err, HasSubstr("pmdplan: error: " + c.string() + ": joint_names: expected the 19 active joints of robot 'sah_tx90'"));
+  EXPECT_THAT(robot.err, HasSubstr("pmdplan: error: " + c.string() +
+                                   ": joint_names: expected the 19 active joints of robot 'sah_tx90'"));
   EXPECT_THAT(robot.err, HasSubstr("not joints of the robot: elbow"));
   EXPECT_FALSE(std::filesystem::exists(out));
 }
@@ -165,8 +172,9 @@ TEST(ViewPathsBench, BenchPathsAreTheRunsPathsAndOpenInTheViewer) {
   test::TempDir dir;
   const auto paths = dir.path() / "paths";
   const auto csv = dir.path() / "runs.csv";
-  const auto bench = runCli(dir, "bench can_on_table --planners pmd,ompl:RRTConnect --runs 1 --seed 4 --time-limit 20 --csv " +
-                                     quoted(csv) + " --paths " + quoted(paths));
+  const auto bench =
+      runCli(dir, "bench can_on_table --planners pmd,ompl:RRTConnect --runs 1 --seed 4 --time-limit 20 --csv " +
+                      quoted(csv) + " --paths " + quoted(paths));
   ASSERT_EQ(bench.exitCode, 0) << bench.out << bench.err;
   for (const char* planner : {"pmd", "ompl-RRTConnect"}) {
     const auto file = paths / ("can_on_table." + std::string(planner) + ".seed4.path.json");

@@ -29,7 +29,8 @@ TEST(BatchedForwardKinematics, EqualsTheEigenKinematicsForOneAndForEveryLane) {
   const BatchedForwardKinematics batched(model, base);
   constexpr int kLanes = BatchedForwardKinematics::kLanes;
   RandomSource random(5);
-  std::vector<double> one(batched.singlePoseSize()), many(batched.batchPoseSize()), lanes(static_cast<std::size_t>(model.dof()) * kLanes);
+  std::vector<double> one(batched.singlePoseSize()), many(batched.batchPoseSize()),
+      lanes(static_cast<std::size_t>(model.dof()) * kLanes);
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<Configuration> qs;
     for (int lane = 0; lane < kLanes; ++lane) {
@@ -70,8 +71,10 @@ TEST(BatchedForwardKinematics, MimicJointsFollowTheirSource) {
       for (int c = 0; c < 3; ++c) m(r, c) = v[r * 3 + c];
     return m;
   };
-  const Eigen::AngleAxisd medium(rotation(before, "index_medium_link").transpose() * rotation(after, "index_medium_link"));
-  const Eigen::AngleAxisd distal(rotation(before, "index_distal_link").transpose() * rotation(after, "index_distal_link"));
+  const Eigen::AngleAxisd medium(rotation(before, "index_medium_link").transpose() *
+                                 rotation(after, "index_medium_link"));
+  const Eigen::AngleAxisd distal(rotation(before, "index_distal_link").transpose() *
+                                 rotation(after, "index_distal_link"));
   EXPECT_NEAR(medium.angle(), 0.5, 1e-12);
   EXPECT_NEAR(distal.angle(), 1.0, 1e-12);
 }

@@ -1,6 +1,7 @@
 // The narrow phase's distances against FCL and brute force: segment and sphere distances are
 // exact; GJK's bounds on the distance between random boxes, cylinders, capsules and spheres hold
-// against FCL's own estimate and close in on each other; partContact never calls two parts apart or overlapping against FCL's answer.
+// against FCL's own estimate and close in on each other; partContact never calls two parts apart or overlapping against
+// FCL's answer.
 #include "pmdplan/collision/convex_distance.hpp"
 
 #include <fcl/fcl.h>
@@ -154,7 +155,8 @@ TEST(ConvexDistance, SphereGapsAreExactForEveryKind) {
 /// search along the axis: the exact point distance is convex along it.
 double axisDistance(const ConvexPart& capsule, const ConvexPart& solid) {
   const auto at = [&](double t) {
-    const double p[3] = {capsule.a[0] + t * (capsule.b[0] - capsule.a[0]), capsule.a[1] + t * (capsule.b[1] - capsule.a[1]),
+    const double p[3] = {capsule.a[0] + t * (capsule.b[0] - capsule.a[0]),
+                         capsule.a[1] + t * (capsule.b[1] - capsule.a[1]),
                          capsule.a[2] + t * (capsule.b[2] - capsule.a[2])};
     return sphereGap(solid, p, 0.0);
   };
@@ -233,8 +235,9 @@ TEST(ConvexDistance, TouchingBoxesAreUncertainAndDeeperOnesOverlap) {
   const double identity[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
   const double half[3] = {0.05, 0.05, 0.05};
   const ConvexPart a = boxPart(identity, half);
-  for (const auto& [offset, expected] : {std::pair{0.1 + 1e-6, Contact::Uncertain}, std::pair{0.1 - 1e-6, Contact::Uncertain},
-                                         std::pair{0.1 - 1e-3, Contact::Overlapping}, std::pair{0.1 + 1e-3, Contact::Apart}}) {
+  for (const auto& [offset, expected] :
+       {std::pair{0.1 + 1e-6, Contact::Uncertain}, std::pair{0.1 - 1e-6, Contact::Uncertain},
+        std::pair{0.1 - 1e-3, Contact::Overlapping}, std::pair{0.1 + 1e-3, Contact::Apart}}) {
     double pose[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, offset, 0.01, 0.0};
     EXPECT_EQ(partContact(a, boxPart(pose, half), 2e-5).contact, expected) << offset;
   }

@@ -19,13 +19,15 @@ namespace {
 
 const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
 
-bool listed(const std::vector<std::pair<int, int>>& selfPairs, const std::vector<std::pair<int, std::size_t>>& obstaclePairs,
-            const RobotModel& model, const Task& task, const CollisionPair& pair) {
+bool listed(const std::vector<std::pair<int, int>>& selfPairs,
+            const std::vector<std::pair<int, std::size_t>>& obstaclePairs, const RobotModel& model, const Task& task,
+            const CollisionPair& pair) {
   const int a = model.linkIndex(pair.first);
   const int b = model.linkIndex(pair.second);
   if (b >= 0) {
     const auto sorted = std::minmax(a, b);
-    return std::find(selfPairs.begin(), selfPairs.end(), std::pair<int, int>(sorted.first, sorted.second)) != selfPairs.end();
+    return std::find(selfPairs.begin(), selfPairs.end(), std::pair<int, int>(sorted.first, sorted.second)) !=
+           selfPairs.end();
   }
   for (const auto& [link, obstacle] : obstaclePairs)
     if (link == a && task.obstacles[obstacle].name == pair.second) return true;
@@ -58,12 +60,15 @@ TEST(FastCollisionChecker, EqualsTheExactCheckerOnRandomConfigurationsOfEveryTas
       for (const auto& [a, b] : screen.overlappingSelf) {
         const CollisionPair pair = named(*task.robot, a, b);
         ASSERT_NE(std::find(report.pairs.begin(), report.pairs.end(), pair), report.pairs.end())
-            << name << " sample " << s << ": " << pair.first << " - " << pair.second << " proven overlapping, FCL finds it free";
+            << name << " sample " << s << ": " << pair.first << " - " << pair.second
+            << " proven overlapping, FCL finds it free";
       }
       for (const auto& [link, obstacle] : screen.overlappingObstacle) {
-        const CollisionPair pair{task.robot->links()[static_cast<std::size_t>(link)].name, task.obstacles[obstacle].name};
+        const CollisionPair pair{task.robot->links()[static_cast<std::size_t>(link)].name,
+                                 task.obstacles[obstacle].name};
         ASSERT_NE(std::find(report.pairs.begin(), report.pairs.end(), pair), report.pairs.end())
-            << name << " sample " << s << ": " << pair.first << " - " << pair.second << " proven overlapping, FCL finds it free";
+            << name << " sample " << s << ": " << pair.first << " - " << pair.second
+            << " proven overlapping, FCL finds it free";
       }
       const bool fastValid = fast.isValid(q);
       ASSERT_EQ(fastValid, report.free()) << name << " sample " << s;
@@ -79,11 +84,14 @@ TEST(FastCollisionChecker, EqualsTheExactCheckerOnRandomConfigurationsOfEveryTas
       uncertain += !screen.uncertainSelf.empty() || !screen.uncertainObstacle.empty();
     }
     const auto& statistics = fast.statistics();
-    EXPECT_EQ(statistics.provenFree + statistics.provenColliding + statistics.confirmedFree + statistics.confirmedColliding,
-              fast.checkCount());
+    EXPECT_EQ(
+        statistics.provenFree + statistics.provenColliding + statistics.confirmedFree + statistics.confirmedColliding,
+        fast.checkCount());
   }
-  std::printf("[ fast vs exact ] %zu configurations: %zu colliding; proven free %zu, proven colliding %zu, with a pair left "
-              "to FCL %zu; %zu arm-only collisions\n", total, colliding, provenFree, provenColliding, uncertain, armColliding);
+  std::printf(
+      "[ fast vs exact ] %zu configurations: %zu colliding; proven free %zu, proven colliding %zu, with a pair left "
+      "to FCL %zu; %zu arm-only collisions\n",
+      total, colliding, provenFree, provenColliding, uncertain, armColliding);
   ::testing::Test::RecordProperty("configurations", static_cast<int>(total));
   ::testing::Test::RecordProperty("colliding", static_cast<int>(colliding));
   ::testing::Test::RecordProperty("proven_free", static_cast<int>(provenFree));
@@ -100,12 +108,13 @@ TEST(FastCollisionChecker, EqualsTheExactCheckerOnRandomConfigurationsOfEveryTas
 // it, FCL on the triangles decides. Here a tetrahedron 8 cm across beside the goal can.
 TEST(FastCollisionChecker, NearAMeshItGivesFclsAnswerToo) {
   test::TempDir dir;
-  dir.write("tetra.stl", "solid t\n"
-                         "facet normal 0 0 -1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n vertex 0 1 0\n endloop\nendfacet\n"
-                         "facet normal 0 -1 0\n outer loop\n vertex 0 0 0\n vertex 0 0 1\n vertex 1 0 0\n endloop\nendfacet\n"
-                         "facet normal -1 0 0\n outer loop\n vertex 0 0 0\n vertex 0 1 0\n vertex 0 0 1\n endloop\nendfacet\n"
-                         "facet normal 1 1 1\n outer loop\n vertex 1 0 0\n vertex 0 0 1\n vertex 0 1 0\n endloop\nendfacet\n"
-                         "endsolid t\n");
+  dir.write("tetra.stl",
+            "solid t\n"
+            "facet normal 0 0 -1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n vertex 0 1 0\n endloop\nendfacet\n"
+            "facet normal 0 -1 0\n outer loop\n vertex 0 0 0\n vertex 0 0 1\n vertex 1 0 0\n endloop\nendfacet\n"
+            "facet normal -1 0 0\n outer loop\n vertex 0 0 0\n vertex 0 1 0\n vertex 0 0 1\n endloop\nendfacet\n"
+            "facet normal 1 1 1\n outer loop\n vertex 1 0 0\n vertex 0 0 1\n vertex 0 1 0\n endloop\nendfacet\n"
+            "endsolid t\n");
   std::string text = readTextFile(dataDirectory() / "scenes" / "can_on_table.yaml");
   const std::string marker = "obstacles:\n";
   text.insert(text.find(marker) + marker.size(),
@@ -122,7 +131,8 @@ TEST(FastCollisionChecker, NearAMeshItGivesFclsAnswerToo) {
     const CollisionReport report = reference.check(q);
     ASSERT_EQ(fast.isValid(q), report.free()) << "sample " << s;
     const ScreenResult screen = fast.screen(q);
-    for (const auto& [link, obstacle] : screen.overlappingObstacle) ASSERT_NE(obstacle, tetra) << "a mesh's enclosure proves nothing";
+    for (const auto& [link, obstacle] : screen.overlappingObstacle)
+      ASSERT_NE(obstacle, tetra) << "a mesh's enclosure proves nothing";
     for (const auto& [link, obstacle] : screen.uncertainObstacle) nearMesh += obstacle == tetra;
     colliding += !report.free();
   }

@@ -44,9 +44,9 @@ TEST(FastSegmentChecker, EqualsSegmentCheckerOnRandomSegmentsOfEveryTask) {
     int made = 0;
     while (made < kPerTask) {
       // Planner-like neighbours: a valid configuration and a random direction, moving every
-      // point at most 2 to 60 mm (up to 60 checked states), or 0.3 to 3 m now and then. Every other segment is laid across
-      // the boundary of the free space instead (toward a colliding configuration, around the first
-      // colliding point found in 5 mm steps), so that many are blocked part way.
+      // point at most 2 to 60 mm (up to 60 checked states), or 0.3 to 3 m now and then. Every other segment is laid
+      // across the boundary of the free space instead (toward a colliding configuration, around the first colliding
+      // point found in 5 mm steps), so that many are blocked part way.
       Configuration from = testing::taskConfiguration(task, random, 1 + made % 2, 0.08);
       if (!reference.isValid(from)) continue;
       Configuration to;
@@ -76,7 +76,8 @@ TEST(FastSegmentChecker, EqualsSegmentCheckerOnRandomSegmentsOfEveryTask) {
       const bool expected = slow.isValid(from, to);
       ASSERT_EQ(batched.isValid(from, to), expected) << name << " segment " << made;
       // A free segment: every interior state was either evaluated or skipped as provably free.
-      if (expected) ASSERT_EQ(batched.statesChecked() + batched.statesSkipped() - fastBefore, slow.statesChecked() - slowBefore);
+      if (expected)
+        ASSERT_EQ(batched.statesChecked() + batched.statesSkipped() - fastBefore, slow.statesChecked() - slowBefore);
       ++total;
       blocked += !expected;
     }
@@ -84,8 +85,9 @@ TEST(FastSegmentChecker, EqualsSegmentCheckerOnRandomSegmentsOfEveryTask) {
     fastStates += batched.statesChecked();
     skipped += batched.statesSkipped();
   }
-  std::printf("[ segments ] %zu segments, %zu blocked; states evaluated: exact %zu, fast %zu (%zu skipped by clearance)\n",
-              total, blocked, exactStates, fastStates, skipped);
+  std::printf(
+      "[ segments ] %zu segments, %zu blocked; states evaluated: exact %zu, fast %zu (%zu skipped by clearance)\n",
+      total, blocked, exactStates, fastStates, skipped);
   ::testing::Test::RecordProperty("segments", static_cast<int>(total));
   ::testing::Test::RecordProperty("blocked", static_cast<int>(blocked));
   EXPECT_GE(total, 10000u);

@@ -26,7 +26,8 @@ ConvexPart partOfShape(const PlacedShape& placed) {
     const double half[3] = {0.5 * box->size.x(), 0.5 * box->size.y(), 0.5 * box->size.z()};
     return boxPart(pose, half);
   }
-  if (const auto* cylinder = std::get_if<CylinderShape>(&placed.shape)) return cylinderPart(pose, cylinder->radius, 0.5 * cylinder->length);
+  if (const auto* cylinder = std::get_if<CylinderShape>(&placed.shape))
+    return cylinderPart(pose, cylinder->radius, 0.5 * cylinder->length);
   return capsulePart(pose + 9, pose + 9, std::get<SphereShape>(placed.shape).radius);
 }
 
@@ -79,18 +80,22 @@ TEST(LinkPartModel, TheRobotsPartsAreExactlyItsPrimitives) {
     std::vector<ConvexPart> primitives;
     for (const auto& placed : shapes) primitives.push_back(partOfShape(placed));
     for (const auto& part : links[l].parts) {
-      capsules += part.kind == ConvexPart::Kind::Capsule && (part.a[0] != part.b[0] || part.a[1] != part.b[1] || part.a[2] != part.b[2]);
+      capsules += part.kind == ConvexPart::Kind::Capsule &&
+                  (part.a[0] != part.b[0] || part.a[1] != part.b[1] || part.a[2] != part.b[2]);
       for (int s = 0; s < 2000; ++s) {
         const Eigen::Vector3d p = samplePoint(part, random);
         ASSERT_TRUE(inAny(primitives, p)) << model.links()[l].name << ": a part reaches beyond the URDF shapes";
-        ASSERT_LE((p - Eigen::Vector3d(part.boundCentre[0], part.boundCentre[1], part.boundCentre[2])).norm(), part.boundRadius + kRounding);
-        ASSERT_LE((p - Eigen::Vector3d(links[l].boundCentre[0], links[l].boundCentre[1], links[l].boundCentre[2])).norm(),
-                  links[l].boundRadius + kRounding);
+        ASSERT_LE((p - Eigen::Vector3d(part.boundCentre[0], part.boundCentre[1], part.boundCentre[2])).norm(),
+                  part.boundRadius + kRounding);
+        ASSERT_LE(
+            (p - Eigen::Vector3d(links[l].boundCentre[0], links[l].boundCentre[1], links[l].boundCentre[2])).norm(),
+            links[l].boundRadius + kRounding);
       }
     }
     for (const auto& primitive : primitives)
       for (int s = 0; s < 2000; ++s)
-        ASSERT_TRUE(inAny(links[l].parts, samplePoint(primitive, random))) << model.links()[l].name << ": a URDF shape is not covered";
+        ASSERT_TRUE(inAny(links[l].parts, samplePoint(primitive, random)))
+            << model.links()[l].name << ": a URDF shape is not covered";
   }
   // Cylinders capped by spheres at both ends are capsules: the proximal and medium phalanges and
   // five arm links (a distal phalanx has a sphere at its tip only: a cylinder and a sphere).

@@ -16,9 +16,9 @@
 #include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/link_part_model.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
-#include "pmdplan/model/mesh_file.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/data_directory.hpp"
+#include "pmdplan/model/mesh_file.hpp"
 
 namespace pmdplan {
 namespace {
@@ -36,8 +36,11 @@ std::filesystem::path robotFile(const std::string& extension) {
 /// The built-in task `name` on the mesh robot, with both checkers (and an exact one for reference).
 struct MeshTask {
   MeshTask(const std::string& name, testing::Tessellation kind)
-      : task(taskWithRobot(dir, name, testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", kind))),
-        exact(task), reference(task), fast(task, exact) {}
+      : task(taskWithRobot(dir, name,
+                           testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", kind))),
+        exact(task),
+        reference(task),
+        fast(task, exact) {}
   test::TempDir dir;
   Task task;
   ExactCollisionChecker exact, reference;
@@ -46,7 +49,8 @@ struct MeshTask {
 
 TEST(MeshRobot, EveryCollisionShapeIsAMeshAndTheMotionBoundCoversIt) {
   test::TempDir dir;
-  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Circumscribed);
+  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot",
+                                            testing::Tessellation::Circumscribed);
   const Task meshes = taskWithRobot(dir, "can_on_table", urdf);
   const Task primitives = loadTaskByName("can_on_table");
   std::size_t count = 0;
@@ -71,7 +75,8 @@ TEST(MeshRobot, EveryCollisionShapeIsAMeshAndTheMotionBoundCoversIt) {
 // sphere mesh a ball (a capsule with one point for core), a cylinder mesh a cylinder.
 TEST(MeshRobot, EveryMeshIsOneEnclosureHoldingAllItsVertices) {
   test::TempDir dir;
-  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Inscribed);
+  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot",
+                                            testing::Tessellation::Inscribed);
   const RobotModel model = RobotModel::load(urdf, urdf.parent_path() / "mesh_robot.srdf");
   const auto parts = linkParts(model);
   int boxes = 0, balls = 0, cylinders = 0;
@@ -90,7 +95,8 @@ TEST(MeshRobot, EveryMeshIsOneEnclosureHoldingAllItsVertices) {
       if (file == "box.stl") {
         ++boxes;
         EXPECT_EQ(part.kind, ConvexPart::Kind::Box);
-        EXPECT_NEAR(2.0 * part.half[0] * 2.0 * part.half[1] * 2.0 * part.half[2], mesh.scale.prod(), 1e-6 * mesh.scale.prod() + 1e-12);
+        EXPECT_NEAR(2.0 * part.half[0] * 2.0 * part.half[1] * 2.0 * part.half[2], mesh.scale.prod(),
+                    1e-6 * mesh.scale.prod() + 1e-12);
       } else if (file == "sphere.stl") {
         ++balls;
         EXPECT_EQ(part.kind, ConvexPart::Kind::Capsule);
@@ -122,7 +128,8 @@ TEST(MeshRobot, FastMotionChecksEqualTheExactOnes) {
     if (!reference.isValid(from)) continue;
     Configuration direction(task.robot->dof());
     for (int i = 0; i < direction.size(); ++i) direction[i] = testing::normal(random);
-    const Configuration to = from + direction * (random.uniform(0.01, 0.6) / slow.bound().bound(from, from + direction));
+    const Configuration to =
+        from + direction * (random.uniform(0.01, 0.6) / slow.bound().bound(from, from + direction));
     if (!task.robot->withinLimits(to, 0.0)) continue;
     const bool free = slow.isValid(from, to);
     ASSERT_EQ(sweeping.isValid(from, to), free) << "segment " << made;
@@ -135,7 +142,8 @@ TEST(MeshRobot, FastMotionChecksEqualTheExactOnes) {
 TEST(MeshRobot, FastEqualsExactOn100000ConfigurationsOfTheFiveTasks) {
   constexpr int kPerTask = 20000;
   test::TempDir dir;
-  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Circumscribed);
+  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot",
+                                            testing::Tessellation::Circumscribed);
   std::size_t total = 0, colliding = 0, provenFree = 0, uncertain = 0;
   for (const auto& name : kTasks) {
     const Task task = taskWithRobot(dir, name, urdf);
@@ -146,7 +154,8 @@ TEST(MeshRobot, FastEqualsExactOn100000ConfigurationsOfTheFiveTasks) {
       const Configuration q = testing::taskConfiguration(task, random, s % 3);
       const bool free = reference.isValid(q);
       ASSERT_EQ(fast.isValid(q), free) << name << " sample " << s;
-      if (s % 8 == 0) ASSERT_EQ(fast.isArmValid(q), reference.isArmValid(q)) << name << " sample " << s << " (arm only)";
+      if (s % 8 == 0)
+        ASSERT_EQ(fast.isArmValid(q), reference.isArmValid(q)) << name << " sample " << s << " (arm only)";
       const ScreenResult screen = fast.screen(q);
       // An enclosure never proves an overlap: every pair not proven apart went to FCL.
       ASSERT_TRUE(screen.overlappingSelf.empty() && screen.overlappingObstacle.empty()) << name << " sample " << s;
@@ -156,8 +165,8 @@ TEST(MeshRobot, FastEqualsExactOn100000ConfigurationsOfTheFiveTasks) {
       uncertain += !screen.provenFree();
     }
   }
-  std::printf("[ mesh robot fast vs exact ] %zu configurations: %zu colliding; proven free %zu, left to FCL %zu\n", total,
-              colliding, provenFree, uncertain);
+  std::printf("[ mesh robot fast vs exact ] %zu configurations: %zu colliding; proven free %zu, left to FCL %zu\n",
+              total, colliding, provenFree, uncertain);
   EXPECT_GE(total, 100000u);
   EXPECT_GT(colliding, total / 10);
   EXPECT_GT(total - colliding, total / 10);
@@ -171,7 +180,8 @@ TEST(MeshRobot, BatchesGiveTheExactCheckersAnswers) {
   RandomSource random(7);
   for (int batch = 0; batch < 1000; ++batch) {
     std::vector<Configuration> qs;
-    for (int k = 0; k < FastCollisionChecker::kLanes; ++k) qs.push_back(testing::taskConfiguration(task, random, 1 + k % 2));
+    for (int k = 0; k < FastCollisionChecker::kLanes; ++k)
+      qs.push_back(testing::taskConfiguration(task, random, 1 + k % 2));
     const Configuration* pointers[FastCollisionChecker::kLanes];
     for (int k = 0; k < FastCollisionChecker::kLanes; ++k) pointers[k] = &qs[static_cast<std::size_t>(k)];
     bool valid[FastCollisionChecker::kLanes];
@@ -185,10 +195,11 @@ TEST(MeshRobot, BatchesGiveTheExactCheckersAnswers) {
 // Inscribed meshes lie inside their primitives, circumscribed ones contain them.
 TEST(MeshRobot, AgreesWithThePrimitivesWhereTheTessellationDecides) {
   test::TempDir dir;
-  const auto inscribed = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "inscribed", testing::Tessellation::Inscribed);
+  const auto inscribed = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "inscribed",
+                                                 testing::Tessellation::Inscribed);
   test::TempDir outer;
-  const auto circumscribed =
-      testing::writeMeshRobot(outer, robotFile(".urdf"), robotFile(".srdf"), "circumscribed", testing::Tessellation::Circumscribed);
+  const auto circumscribed = testing::writeMeshRobot(outer, robotFile(".urdf"), robotFile(".srdf"), "circumscribed",
+                                                     testing::Tessellation::Circumscribed);
   std::size_t total = 0, primitiveColliding = 0, inscribedColliding = 0, circumscribedColliding = 0;
   for (const auto& name : kTasks) {
     const Task primitives = loadTaskByName(name);
@@ -198,15 +209,19 @@ TEST(MeshRobot, AgreesWithThePrimitivesWhereTheTessellationDecides) {
     for (int s = 0; s < 4000; ++s) {
       const Configuration q = testing::taskConfiguration(primitives, random, s % 3);
       const bool primitiveFree = primitive.isValid(q), insideFree = inside.isValid(q), aroundFree = around.isValid(q);
-      if (primitiveFree) ASSERT_TRUE(insideFree) << name << " sample " << s << ": inscribed meshes collide, primitives do not";
-      if (!insideFree) ASSERT_FALSE(aroundFree) << name << " sample " << s << ": circumscribed meshes free, inscribed collide";
-      if (!primitiveFree) ASSERT_FALSE(aroundFree) << name << " sample " << s << ": circumscribed meshes free, primitives collide";
+      if (primitiveFree)
+        ASSERT_TRUE(insideFree) << name << " sample " << s << ": inscribed meshes collide, primitives do not";
+      if (!insideFree)
+        ASSERT_FALSE(aroundFree) << name << " sample " << s << ": circumscribed meshes free, inscribed collide";
+      if (!primitiveFree)
+        ASSERT_FALSE(aroundFree) << name << " sample " << s << ": circumscribed meshes free, primitives collide";
       ++total;
       primitiveColliding += !primitiveFree, inscribedColliding += !insideFree, circumscribedColliding += !aroundFree;
     }
   }
-  std::printf("[ meshes vs primitives ] %zu configurations colliding: inscribed %zu <= primitives %zu <= circumscribed %zu\n",
-              total, inscribedColliding, primitiveColliding, circumscribedColliding);
+  std::printf(
+      "[ meshes vs primitives ] %zu configurations colliding: inscribed %zu <= primitives %zu <= circumscribed %zu\n",
+      total, inscribedColliding, primitiveColliding, circumscribedColliding);
   EXPECT_GT(primitiveColliding, total / 10);
 }
 
@@ -215,8 +230,10 @@ TEST(MeshRobot, AgreesWithThePrimitivesWhereTheTessellationDecides) {
 // fast checker agrees; an open mesh (one triangle) has no inside.
 TEST(MeshRobot, GeometryWhollyInsideAClosedMeshCollidesWithIt) {
   test::TempDir dir;
-  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot", testing::Tessellation::Circumscribed);
-  dir.write("sheet.stl", testing::stlText({{Eigen::Vector3d(-5, -5, 3), Eigen::Vector3d(5, -5, 3), Eigen::Vector3d(0, 5, 3)}}));
+  const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot",
+                                            testing::Tessellation::Circumscribed);
+  dir.write("sheet.stl",
+            testing::stlText({{Eigen::Vector3d(-5, -5, 3), Eigen::Vector3d(5, -5, 3), Eigen::Vector3d(0, 5, 3)}}));
   for (const std::string robot : {std::string("sah_tx90"), urdf.string()}) {
     std::string text = testing::builtInTaskText("can_on_table", robot);
     const std::string marker = "obstacles:\n";

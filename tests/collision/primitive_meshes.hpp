@@ -4,9 +4,9 @@
 // attribute. Inscribed tessellations (vertices on the primitive's surface) lie inside the
 // primitive; circumscribed ones (faces tangent to it or outside) contain it. Used by the tests and
 // by bench/collision_check_bench.cpp.
-#include <Eigen/Geometry>
 #include <tinyxml2.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -109,14 +109,17 @@ inline std::string vectorText(double x, double y, double z) {
 /// Writes `dir`/NAME.urdf: the URDF `urdf` with every primitive collision geometry a mesh in
 /// dir/meshes/, and NAME.srdf copied from `srdf`. Returns the URDF's path.
 inline std::filesystem::path writeMeshRobot(const test::TempDir& dir, const std::filesystem::path& urdf,
-                                            const std::filesystem::path& srdf, const std::string& name, Tessellation kind) {
+                                            const std::filesystem::path& srdf, const std::string& name,
+                                            Tessellation kind) {
   dir.write("meshes/box.stl", stlText(unitBox()));
   dir.write("meshes/cylinder.stl", stlText(unitCylinder(kind)));
   dir.write("meshes/sphere.stl", stlText(unitSphere(kind)));
   tinyxml2::XMLDocument document;
-  if (document.LoadFile(urdf.string().c_str()) != tinyxml2::XML_SUCCESS) throw std::runtime_error("cannot read " + urdf.string());
+  if (document.LoadFile(urdf.string().c_str()) != tinyxml2::XML_SUCCESS)
+    throw std::runtime_error("cannot read " + urdf.string());
   for (auto* link = document.RootElement()->FirstChildElement("link"); link; link = link->NextSiblingElement("link"))
-    for (auto* collision = link->FirstChildElement("collision"); collision; collision = collision->NextSiblingElement("collision")) {
+    for (auto* collision = link->FirstChildElement("collision"); collision;
+         collision = collision->NextSiblingElement("collision")) {
       auto* geometry = collision->FirstChildElement("geometry");
       auto* shape = geometry->FirstChildElement();
       const std::string type = shape->Name();

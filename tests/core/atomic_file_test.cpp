@@ -20,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class AtomicFile : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("pmdplan-atomic-" + std::to_string(std::random_device{}()));
     fs::create_directories(dir_);

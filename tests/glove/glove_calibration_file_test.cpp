@@ -30,7 +30,8 @@ TEST(GloveCalibrationFile, RoundTripsToIdenticalValues) {
   const GloveCalibration back = parseGloveCalibration(text, "c.yaml");
   for (int s = 0; s < kCyberGloveSensorCount; ++s) {
     EXPECT_EQ(back.sensors[static_cast<std::size_t>(s)].gain, calibration.sensors[static_cast<std::size_t>(s)].gain);
-    EXPECT_EQ(back.sensors[static_cast<std::size_t>(s)].offset, calibration.sensors[static_cast<std::size_t>(s)].offset);
+    EXPECT_EQ(back.sensors[static_cast<std::size_t>(s)].offset,
+              calibration.sensors[static_cast<std::size_t>(s)].offset);
   }
   ASSERT_EQ(back.crossTerms.size(), 1u);
   EXPECT_EQ(back.crossTerms[0].sensor, 0);
@@ -47,30 +48,38 @@ TEST(GloveCalibrationFile, CrossTermsAreOptional) {
 }
 
 TEST(GloveCalibrationFile, UnknownSensorNamesTheLine) {
-  test::expectInputError([] { parseGloveCalibration("format: pmdplan-glove-calibration\n" + sensorsBlock("ThumbRoll"), "c.yaml"); },
-                         "c.yaml", "line 3", "unknown sensor 'ThumbRoll'");
+  test::expectInputError(
+      [] { parseGloveCalibration("format: pmdplan-glove-calibration\n" + sensorsBlock("ThumbRoll"), "c.yaml"); },
+      "c.yaml", "line 3", "unknown sensor 'ThumbRoll'");
 }
 
 TEST(GloveCalibrationFile, EverySensorNeedsACalibration) {
   std::string text = sensorsBlock();
   text.erase(text.find("  WristYaw"));
-  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "(sensors)", "no calibration for sensor WristYaw");
+  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "(sensors)",
+                         "no calibration for sensor WristYaw");
 }
 
 TEST(GloveCalibrationFile, BadValuesNameLineAndKey) {
   std::string text = sensorsBlock();
   text.replace(text.find("gain: 0.01"), 10, "gain: fast");
-  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "line 2 (sensors.ThumbRotate.gain)", "not a finite number");
-  test::expectInputError([] { parseGloveCalibration(sensorsBlock() + "cross_terms:\n  - {sensor: ThumbRotate, from: Nope, gain: 1}\n", "c.yaml"); },
-                         "c.yaml", "line 25", "unknown sensor 'Nope'");
-  test::expectInputError([] { parseGloveCalibration(sensorsBlock() + "colour: blue\n", "c.yaml"); }, "c.yaml", "line 24",
-                         "unknown key 'colour'");
-  test::expectInputError([] { parseGloveCalibration("format: pmdplan-hand-mapping\n" + sensorsBlock(), "c.yaml"); }, "c.yaml",
-                         "line 1 (format)", "not a pmdplan-glove-calibration file");
+  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "line 2 (sensors.ThumbRotate.gain)",
+                         "not a finite number");
+  test::expectInputError(
+      [] {
+        parseGloveCalibration(sensorsBlock() + "cross_terms:\n  - {sensor: ThumbRotate, from: Nope, gain: 1}\n",
+                              "c.yaml");
+      },
+      "c.yaml", "line 25", "unknown sensor 'Nope'");
+  test::expectInputError([] { parseGloveCalibration(sensorsBlock() + "colour: blue\n", "c.yaml"); }, "c.yaml",
+                         "line 24", "unknown key 'colour'");
+  test::expectInputError([] { parseGloveCalibration("format: pmdplan-hand-mapping\n" + sensorsBlock(), "c.yaml"); },
+                         "c.yaml", "line 1 (format)", "not a pmdplan-glove-calibration file");
 }
 
 TEST(GloveCalibrationFile, SyntaxErrorsAndEmptyFilesNameTheLine) {
-  test::expectInputError([] { parseGloveCalibration("sensors: [1, 2\nx: 3\n", "c.yaml"); }, "c.yaml", "line 2", "YAML syntax error");
+  test::expectInputError([] { parseGloveCalibration("sensors: [1, 2\nx: 3\n", "c.yaml"); }, "c.yaml", "line 2",
+                         "YAML syntax error");
   test::expectInputError([] { parseGloveCalibration("\n", "c.yaml"); }, "c.yaml", "line 1", "empty file");
 }
 

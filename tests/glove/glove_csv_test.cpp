@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "support/input_error_matchers.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "support/input_error_matchers.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {
@@ -17,7 +17,8 @@ std::string header(bool withTime = true) {
 
 std::string row(const std::string& time, int base) {
   std::string text = time;
-  for (int s = 0; s < kCyberGloveSensorCount; ++s) text += (text.empty() ? "" : ",") + std::to_string((base + 7 * s) % 256);
+  for (int s = 0; s < kCyberGloveSensorCount; ++s)
+    text += (text.empty() ? "" : ",") + std::to_string((base + 7 * s) % 256);
   return text + "\n";
 }
 
@@ -46,7 +47,8 @@ TEST(GloveCsv, WriteThenReadGivesTheSameRecording) {
   recording.notes = {"SYNTHETIC test"};
   for (int f = 0; f < 5; ++f) {
     GloveFrame frame{};
-    for (int s = 0; s < kCyberGloveSensorCount; ++s) frame[static_cast<std::size_t>(s)] = static_cast<std::uint8_t>((f * 31 + s * 11) % 256);
+    for (int s = 0; s < kCyberGloveSensorCount; ++s)
+      frame[static_cast<std::size_t>(s)] = static_cast<std::uint8_t>((f * 31 + s * 11) % 256);
     recording.frames.push_back(frame);
     recording.timeS.push_back(f / 100.0);
   }
@@ -71,19 +73,22 @@ TEST(GloveCsv, NonNumericCellNamesLineAndColumn) {
 
 TEST(GloveCsv, RawValueOutsideTheByteRangeNamesLineAndColumn) {
   std::string high = header(false) + "256" + row("", 1).substr(row("", 1).find(','));
-  test::expectInputError([&] { parseGloveCsv(high, "rec.csv"); }, "rec.csv", "line 2, column ThumbRotate", "outside the raw sensor range 0-255");
+  test::expectInputError([&] { parseGloveCsv(high, "rec.csv"); }, "rec.csv", "line 2, column ThumbRotate",
+                         "outside the raw sensor range 0-255");
   std::string negative = header(false) + "-3" + row("", 1).substr(row("", 1).find(','));
-  test::expectInputError([&] { parseGloveCsv(negative, "rec.csv"); }, "rec.csv", "line 2, column ThumbRotate", "outside the raw sensor range");
+  test::expectInputError([&] { parseGloveCsv(negative, "rec.csv"); }, "rec.csv", "line 2, column ThumbRotate",
+                         "outside the raw sensor range");
 }
 
 TEST(GloveCsv, BadTimeNamesTheColumn) {
-  test::expectInputError([] { parseGloveCsv(header() + row("soon", 1), "rec.csv"); }, "rec.csv", "line 2, column time_s",
-                         "not a time");
+  test::expectInputError([] { parseGloveCsv(header() + row("soon", 1), "rec.csv"); }, "rec.csv",
+                         "line 2, column time_s", "not a time");
 }
 
 TEST(GloveCsv, EmptyFileIsAnError) {
   test::expectInputError([] { parseGloveCsv("", "rec.csv"); }, "rec.csv", "line 1", "empty recording");
-  test::expectInputError([] { parseGloveCsv("# only a comment\n\n", "rec.csv"); }, "rec.csv", "line 2", "empty recording");
+  test::expectInputError([] { parseGloveCsv("# only a comment\n\n", "rec.csv"); }, "rec.csv", "line 2",
+                         "empty recording");
 }
 
 TEST(GloveCsv, HeaderWithoutFramesIsAnError) {
@@ -91,9 +96,12 @@ TEST(GloveCsv, HeaderWithoutFramesIsAnError) {
 }
 
 TEST(GloveCsv, HeaderProblemsNameTheColumn) {
-  test::expectInputError([] { parseGloveCsv("time_s,Thumb\n", "rec.csv"); }, "rec.csv", "line 1, column 2", "unknown column 'Thumb'");
-  test::expectInputError([] { parseGloveCsv("time_s,ThumbRotate\n", "rec.csv"); }, "rec.csv", "line 1", "lacks the sensor columns ThumbMPJ");
-  test::expectInputError([] { parseGloveCsv("ThumbRotate,ThumbRotate\n", "rec.csv"); }, "rec.csv", "line 1, column 2", "appears twice");
+  test::expectInputError([] { parseGloveCsv("time_s,Thumb\n", "rec.csv"); }, "rec.csv", "line 1, column 2",
+                         "unknown column 'Thumb'");
+  test::expectInputError([] { parseGloveCsv("time_s,ThumbRotate\n", "rec.csv"); }, "rec.csv", "line 1",
+                         "lacks the sensor columns ThumbMPJ");
+  test::expectInputError([] { parseGloveCsv("ThumbRotate,ThumbRotate\n", "rec.csv"); }, "rec.csv", "line 1, column 2",
+                         "appears twice");
 }
 
 TEST(GloveCsv, ReadsAFileAndNamesIt) {

@@ -46,13 +46,16 @@ TEST(GloveSerialStream, ErrorsNameTheReplyAndByte) {
                          "reply 2 (byte 24)", "truncated");
   std::string wrongLead = reply(0) + reply(1);
   wrongLead[24] = 'X';
-  test::expectInputError([&] { parseGloveSerialStream(wrongLead, "g.bin"); }, "g.bin", "reply 2 (byte 24)", "start with 'G'");
+  test::expectInputError([&] { parseGloveSerialStream(wrongLead, "g.bin"); }, "g.bin", "reply 2 (byte 24)",
+                         "start with 'G'");
   std::string noTerminator = reply(0);
   noTerminator[23] = 5;
-  test::expectInputError([&] { parseGloveSerialStream(noTerminator, "g.bin"); }, "g.bin", "reply 1 (byte 23)", "end with a 0 byte");
+  test::expectInputError([&] { parseGloveSerialStream(noTerminator, "g.bin"); }, "g.bin", "reply 1 (byte 23)",
+                         "end with a 0 byte");
   std::string zeroReading = reply(0);
   zeroReading[3] = '\0';
-  test::expectInputError([&] { parseGloveSerialStream(zeroReading, "g.bin"); }, "g.bin", "reply 1 (byte 3)", "ThumbIJ reads 0");
+  test::expectInputError([&] { parseGloveSerialStream(zeroReading, "g.bin"); }, "g.bin", "reply 1 (byte 3)",
+                         "ThumbIJ reads 0");
 }
 
 TEST(GloveSerialStream, ReadsABinaryFile) {

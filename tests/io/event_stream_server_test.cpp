@@ -1,12 +1,11 @@
 #include "pmdplan/io/event_stream_server.hpp"
 
 #include <arpa/inet.h>
+#include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include <chrono>
 #include <thread>
@@ -54,7 +53,8 @@ int subscribe(EventStreamServer& server, std::string* received = nullptr) {
 }
 
 void waitForSubscribers(EventStreamServer& server, int count) {
-  for (int i = 0; i < 500 && server.subscribers() < count; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  for (int i = 0; i < 500 && server.subscribers() < count; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_EQ(server.subscribers(), count);
 }
 

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <functional>
 
+#include "planning/toy_problem.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/json_text.hpp"
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
-#include "planning/toy_problem.hpp"
 
 namespace pmdplan {
 namespace {
@@ -97,7 +97,8 @@ TEST(PathFile, HasTheKeysOfTheIssueInOrder) {
   const nlohmann::ordered_json json = nlohmann::ordered_json::parse(formatPathFile(samplePath()));
   std::vector<std::string> keys;
   for (auto item = json.begin(); item != json.end(); ++item) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{"task", "planner", "seed", "joint_names", "points", "mimic", "statistics"}));
+  EXPECT_EQ(keys,
+            (std::vector<std::string>{"task", "planner", "seed", "joint_names", "points", "mimic", "statistics"}));
   EXPECT_EQ(json["mimic"]["thumb_distal"], nlohmann::ordered_json::parse(R"(["thumb_medium", 0.5, -0.1])"));
   EXPECT_EQ(json["points"][0]["positions"].size(), 3u);
   EXPECT_FALSE(json["statistics"].contains("planning_time_s"));
@@ -112,7 +113,8 @@ TEST(PathFile, AGraspPathMarksItsApproachAndClosing) {
   const nlohmann::ordered_json json = nlohmann::ordered_json::parse(text);
   std::vector<std::string> keys;
   for (auto item = json.begin(); item != json.end(); ++item) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{"task", "planner", "seed", "joint_names", "points", "phases", "mimic", "statistics"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"task", "planner", "seed", "joint_names", "points", "phases", "mimic",
+                                            "statistics"}));
   EXPECT_EQ(json["phases"], nlohmann::ordered_json::parse(R"({"approach": [0, 1], "closing": [1, 2]})"));
   const PathFile back = parsePathFile(text, "grasp.json");
   expectSamePath(path, back, false);
@@ -211,7 +213,8 @@ TEST(PathFile, BadFilesNameTheFileAndTheKey) {
   expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, 1], "closing": [2, 2]})"); }, "phases");
   expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, 2], "closing": [2, 2]})"); }, "phases");
   expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, 1], "closing": [1]})"); }, "phases.closing");
-  expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, -1], "closing": [1, 2]})"); }, "phases.approach[1]");
+  expectBadFile([](J& j) { j["phases"] = J::parse(R"({"approach": [0, -1], "closing": [1, 2]})"); },
+                "phases.approach[1]");
 }
 
 TEST(PathFile, NotJsonOrNotAnObject) {

@@ -11,7 +11,7 @@ namespace pmdplan {
 namespace {
 
 class PathRobotMatchTest : public ::testing::Test {
-protected:
+ protected:
   RobotModel robot_ = RobotModel::loadBuiltIn("sah_tx90");
 
   PathFile pathOf(const std::vector<Configuration>& points) const {

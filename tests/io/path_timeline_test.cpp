@@ -8,7 +8,7 @@ namespace pmdplan {
 namespace {
 
 class PathTimelineTest : public ::testing::Test {
-protected:
+ protected:
   RobotModel robot_ = RobotModel::loadBuiltIn("sah_tx90");
   Configuration lowest() const {
     Configuration q(robot_.dof());

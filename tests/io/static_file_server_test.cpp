@@ -1,11 +1,10 @@
 #include "pmdplan/io/static_file_server.hpp"
 
 #include <arpa/inet.h>
+#include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include <thread>
 
@@ -27,7 +26,8 @@ std::string roundTrip(StaticFileServer& server, const std::string& request) {
   if (::connect(client, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
     ::send(client, request.data(), request.size(), 0);
     char buffer[4096];
-    for (ssize_t n; (n = ::recv(client, buffer, sizeof buffer, 0)) > 0;) reply.append(buffer, static_cast<std::size_t>(n));
+    for (ssize_t n; (n = ::recv(client, buffer, sizeof buffer, 0)) > 0;)
+      reply.append(buffer, static_cast<std::size_t>(n));
   }
   ::close(client);
   serving.join();

@@ -24,7 +24,9 @@ Eigen::MatrixXd correlatedPostures(const JointLimits& joints, int frames) {
     const double t = static_cast<double>(f) / (frames - 1);
     for (std::size_t j = 0; j < joints.size(); ++j) {
       double unit = 0.5;
-      if (joints[j].name == "middle_proximal" || joints[j].name == "ring_proximal" || joints[j].name == "index_abduction") unit = t;
+      if (joints[j].name == "middle_proximal" || joints[j].name == "ring_proximal" ||
+          joints[j].name == "index_abduction")
+        unit = t;
       if (joints[j].name == "ring_abduction") unit = 1.0 - t;
       postures(f, static_cast<Eigen::Index>(j)) = joints[j].denormalise(unit);
     }
@@ -36,7 +38,8 @@ TEST(SynergyPlots, TheVarianceFigureHasABarPerPmdTheCumulativeLineAndThePapersMa
   const SynergyModel model = loadSynergyModel(defaultSynergyModelPath("sah_tx90"));
   const std::string svg = cumulativeVarianceSvg(model);
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
-  EXPECT_EQ(count(svg, "fill=\"#8fb3dc\"/>"), static_cast<std::size_t>(model.directionCount()) + 1) << "bars and the legend's swatch";
+  EXPECT_EQ(count(svg, "fill=\"#8fb3dc\"/>"), static_cast<std::size_t>(model.directionCount()) + 1)
+      << "bars and the legend's swatch";
   EXPECT_EQ(count(svg, "<circle"), static_cast<std::size_t>(model.directionCount()));
   EXPECT_EQ(count(svg, "l6 6l-6 6l-6 -6z"), 3u) << "the paper's 1, 2 and 3 PMD values";
   EXPECT_NE(svg.find(">100.0</text>"), std::string::npos) << "all directions together carry all the variance";

@@ -12,7 +12,7 @@ namespace pmdplan {
 namespace {
 
 class SynergyReadoutTest : public ::testing::Test {
-protected:
+ protected:
   RobotModel robot_ = RobotModel::loadBuiltIn("sah_tx90");
   SynergyModel model_ = loadSynergyModel(defaultSynergyModelPath("sah_tx90"));
   std::vector<int> slots_ = modelJointSlots(model_, robot_, "model.yaml");

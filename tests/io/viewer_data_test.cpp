@@ -40,7 +40,8 @@ TEST(ViewerData, AMeshObstacleTravelsWithTheFolderAndARobotWithoutModelHasNoSyne
   // The checker cannot load a mesh without triangles: no clearance, and the page says why.
   EXPECT_TRUE(data.document["path"]["clearance"].is_null());
   ASSERT_EQ(data.document["warnings"].size(), 1u);
-  EXPECT_NE(data.document["warnings"][0].get<std::string>().find("no collisions or clearance shown"), std::string::npos);
+  EXPECT_NE(data.document["warnings"][0].get<std::string>().find("no collisions or clearance shown"),
+            std::string::npos);
 
   const auto assets = dir.path() / "assets";
   for (const auto& file : viewerAssetFiles()) dir.write("assets/" + file, file);

@@ -39,10 +39,12 @@ TEST(ForwardKinematics, MatchesTheClosedFormOfAPlanarArmWithMimicAndPrismaticJoi
     const auto poses = fk.linkPoses(q);
     const double wrist = -(0.5 * b + 0.2);  // its axis is -z
     const double heading = a + b + wrist;
-    const Eigen::Vector3d expected = Eigen::Vector3d(1, 2, 3.5) +
-                                     Eigen::Vector3d(std::cos(a) + 0.5 * std::cos(a + b) + (0.25 + s) * std::cos(heading),
-                                                     std::sin(a) + 0.5 * std::sin(a + b) + (0.25 + s) * std::sin(heading), 0);
-    EXPECT_NEAR((poses[static_cast<std::size_t>(model.linkIndex("slider_link"))].translation() - expected).norm(), 0.0, 1e-12);
+    const Eigen::Vector3d expected =
+        Eigen::Vector3d(1, 2, 3.5) +
+        Eigen::Vector3d(std::cos(a) + 0.5 * std::cos(a + b) + (0.25 + s) * std::cos(heading),
+                        std::sin(a) + 0.5 * std::sin(a + b) + (0.25 + s) * std::sin(heading), 0);
+    EXPECT_NEAR((poses[static_cast<std::size_t>(model.linkIndex("slider_link"))].translation() - expected).norm(), 0.0,
+                1e-12);
   }
 }
 

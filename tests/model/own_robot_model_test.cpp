@@ -122,7 +122,8 @@ TEST(OwnRobotModel, PackagePathsResolveThroughTheSearchPath) {
   setPackageSearchPath(PackageSearchPath::parse("/nonexistent::" + (dir.path() / "ws/src").string()));
   EXPECT_EQ(resolveResourcePath("package://my_robot/urdf/r.urdf", from, "robot"), urdf);
   EXPECT_EQ(resolveResourcePath("file://" + urdf.string(), from, "robot"), urdf);
-  EXPECT_EQ(resolveResourcePath("ws/src/my_robot/meshes/m.stl", from, "mesh"), dir.path() / "ws/src/my_robot/meshes/m.stl");
+  EXPECT_EQ(resolveResourcePath("ws/src/my_robot/meshes/m.stl", from, "mesh"),
+            dir.path() / "ws/src/my_robot/meshes/m.stl");
   try {
     resolveResourcePath("package://other/x.stl", from, "link[a].visual[0]");
     FAIL() << "expected an InputError";

@@ -56,7 +56,9 @@ TEST(RobotModel, NormalisesJointsToTheUnitIntervalAndBack) {
   Configuration q(model.dof());
   for (int i = 0; i < model.dof(); ++i) q[i] = model.activeJoints()[static_cast<std::size_t>(i)].lower;
   EXPECT_NEAR(model.normalise(q).maxCoeff(), 0.0, 1e-12);
-  for (int i = 0; i < model.dof(); ++i) q[i] = 0.25 * model.activeJoints()[static_cast<std::size_t>(i)].lower + 0.75 * model.activeJoints()[static_cast<std::size_t>(i)].upper;
+  for (int i = 0; i < model.dof(); ++i)
+    q[i] = 0.25 * model.activeJoints()[static_cast<std::size_t>(i)].lower +
+           0.75 * model.activeJoints()[static_cast<std::size_t>(i)].upper;
   EXPECT_NEAR((model.normalise(q).array() - 0.75).abs().maxCoeff(), 0.0, 1e-12);
   EXPECT_NEAR((model.denormalise(model.normalise(q)) - q).norm(), 0.0, 1e-12);
   EXPECT_TRUE(model.withinLimits(q));
@@ -96,7 +98,9 @@ TEST(RobotModelErrors, MalformedXmlNamesTheFileAndLine) {
 
 TEST(RobotModelErrors, ADanglingJointIsRejectedWithUrdfdomsReason) {
   test::TempDir dir;
-  const auto file = dir.write("dangling.urdf", toyUrdf(R"(<joint name="ghost" type="fixed"><parent link="nowhere"/><child link="tip"/></joint>)"));
+  const auto file =
+      dir.write("dangling.urdf",
+                toyUrdf(R"(<joint name="ghost" type="fixed"><parent link="nowhere"/><child link="tip"/></joint>)"));
   const auto e = expectInputError([&] { RobotModel::load(file); });
   EXPECT_EQ(e.file(), file.string());
   EXPECT_NE(e.message().find("not a valid URDF"), std::string::npos);

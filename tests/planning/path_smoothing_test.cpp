@@ -45,7 +45,7 @@ bool segmentHitsBox(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Bo
 }
 
 class BoxesMotionValidator : public MotionValidator {
-public:
+ public:
   std::vector<Box> boxes;
   std::size_t calls = 0;
   bool isValid(const Configuration& from, const Configuration& to) override {

@@ -30,11 +30,19 @@ TEST(PlannerSettingTable, FlagsAreUniqueAndEveryValueReadsBack) {
 // Every field of PlannerParameters is reachable: setting each one to a value other than the
 // default changes the description, and changes only that setting's part of it.
 TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
-  const std::map<std::string, std::string> other = {
-      {"rho-a", "0.05"},        {"rho-a-growth", "linear"}, {"neighbours", "7"},  {"neighbour-threshold", "2.5"},
-      {"arm-trials", "3"},      {"hand-trials", "4"},       {"max-samples", "99"}, {"sweep-visits", "1"},
-      {"kappa", "1.5"},         {"max-pmds", "2"},          {"smooth", "off"},     {"time-limit", "inf"},
-      {"seed", "18446744073709551615"}};
+  const std::map<std::string, std::string> other = {{"rho-a", "0.05"},
+                                                    {"rho-a-growth", "linear"},
+                                                    {"neighbours", "7"},
+                                                    {"neighbour-threshold", "2.5"},
+                                                    {"arm-trials", "3"},
+                                                    {"hand-trials", "4"},
+                                                    {"max-samples", "99"},
+                                                    {"sweep-visits", "1"},
+                                                    {"kappa", "1.5"},
+                                                    {"max-pmds", "2"},
+                                                    {"smooth", "off"},
+                                                    {"time-limit", "inf"},
+                                                    {"seed", "18446744073709551615"}};
   ASSERT_EQ(other.size(), plannerSettingTable().size()) << "a new setting needs a value here";
   for (const auto& [flag, value] : other) {
     PlannerParameters p;
@@ -47,10 +55,12 @@ TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
 }
 
 TEST(PlannerSettingTable, MalformedTextNamesTheFlag) {
-  const std::pair<const char*, const char*> bad[] = {
-      {"rho-a", "nan"},     {"rho-a", "0.1x"},   {"rho-a", ""},         {"neighbours", "-1"}, {"neighbours", "2.5"},
-      {"seed", "-1"},       {"seed", "1e3"},     {"arm-trials", "4294967296"}, {"smooth", "yes"},
-      {"rho-a-growth", "Factorial"}, {"time-limit", "1e999"}};
+  const std::pair<const char*, const char*> bad[] = {{"rho-a", "nan"},       {"rho-a", "0.1x"},
+                                                     {"rho-a", ""},          {"neighbours", "-1"},
+                                                     {"neighbours", "2.5"},  {"seed", "-1"},
+                                                     {"seed", "1e3"},        {"arm-trials", "4294967296"},
+                                                     {"smooth", "yes"},      {"rho-a-growth", "Factorial"},
+                                                     {"time-limit", "1e999"}};
   for (const auto& [flag, text] : bad) {
     PlannerParameters p;
     try {

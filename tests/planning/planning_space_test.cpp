@@ -74,7 +74,8 @@ TEST(PlanningSpace, AHandAloneHasNoArmJoints) {
   space.armIndices.clear();
   space.handIndices = {0, 1, 2, 3, 4, 5};
   EXPECT_NO_THROW(space.check());
-  EXPECT_EQ(space.armDistance(space.denormalise(Eigen::VectorXd::Zero(6)), space.denormalise(Eigen::VectorXd::Ones(6))), 0.0);
+  EXPECT_EQ(space.armDistance(space.denormalise(Eigen::VectorXd::Zero(6)), space.denormalise(Eigen::VectorXd::Ones(6))),
+            0.0);
 }
 
 }  // namespace

@@ -9,17 +9,17 @@
 #include <memory>
 #include <vector>
 
+#include "planning/toy_problem.hpp"
 #include "pmdplan/planning/full_space_hand_sampler.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
 #include "pmdplan/planning/synergy_hand_sampler.hpp"
-#include "planning/toy_problem.hpp"
 
 namespace pmdplan {
 namespace {
 
 /// Wraps a sampler and records the dimension of every call.
 class RecordingHandSampler : public HandSampler {
-public:
+ public:
   explicit RecordingHandSampler(std::unique_ptr<HandSampler> inner, std::vector<int>& dimensions)
       : inner_(std::move(inner)), dimensions_(dimensions) {}
   int initialDimension() const override { return inner_->initialDimension(); }
@@ -30,7 +30,7 @@ public:
   }
   std::string name() const override { return inner_->name(); }
 
-private:
+ private:
   std::unique_ptr<HandSampler> inner_;
   std::vector<int>& dimensions_;
 };
@@ -41,8 +41,7 @@ struct ToyRun {
   toy::WallMotionValidator motionValidator;
   PmdRoadmapPlanner planner;
 
-  explicit ToyRun(PlannerParameters parameters, HandSamplingMode mode = HandSamplingMode::Synergy,
-                  toy::Wall wall = {})
+  explicit ToyRun(PlannerParameters parameters, HandSamplingMode mode = HandSamplingMode::Synergy, toy::Wall wall = {})
       : stateValidator(wall),
         motionValidator(wall),
         planner(toy::space(), stateValidator, motionValidator, makeSampler(mode), parameters) {
@@ -83,7 +82,8 @@ TEST(PmdRoadmapPlanner, SolvesTheNarrowPassage) {
     EXPECT_EQ(stats.roadmapNodes, run.planner.roadmap().nodeCount());
     EXPECT_GE(stats.samples, stats.roadmapNodes - 2);
     EXPECT_GE(stats.armTrials, stats.roadmapNodes - 2);
-    EXPECT_GE(stats.samples, stats.armTrials - (stats.roadmapNodes - 2)) << "every arm trial that gave a node drew a hand";
+    EXPECT_GE(stats.samples, stats.armTrials - (stats.roadmapNodes - 2))
+        << "every arm trial that gave a node drew a hand";
     EXPECT_GE(stats.maxTrials, 1u);
     EXPECT_LE(stats.maxTrials, 100u);
     EXPECT_EQ(stats.finalArmHalfSize, 0.001) << "the first sweep suffices here";
@@ -162,12 +162,12 @@ TEST(PmdRoadmapPlanner, TheFullSpaceSwitchSolvesWithWholeHandSamples) {
 
 /// Start and goal free (the first two checks), every sample in collision.
 class NothingButTheEndsIsFree : public StateValidator {
-public:
+ public:
   bool isValid(const Configuration&) override { return ++checks_ <= 2; }
   bool isArmValid(const Configuration&) override { return true; }
   std::size_t checkCount() const override { return checks_; }
 
-private:
+ private:
   std::size_t checks_ = 0;
 };
 
@@ -180,10 +180,10 @@ TEST(PmdRoadmapPlanner, HandDimensionGrowsFromTwoToTheMaximum) {
   std::vector<int> recorded;
   PlannerParameters parameters = withSeed(1);
   parameters.maxSamples = 30;  // N bounds the samples (hand-arm draws): n_H = 10 for each of 3 arms
-  PmdRoadmapPlanner planner(toy::space(), stateValidator, motionValidator,
-                            std::make_unique<RecordingHandSampler>(
-                                std::make_unique<SynergyHandSampler>(toy::space(), model), recorded),
-                            parameters);
+  PmdRoadmapPlanner planner(
+      toy::space(), stateValidator, motionValidator,
+      std::make_unique<RecordingHandSampler>(std::make_unique<SynergyHandSampler>(toy::space(), model), recorded),
+      parameters);
   planner.setStartAndGoal(toy::start(), toy::goal());
   EXPECT_EQ(planner.solve(), PlannerStatus::SampleLimit);
   const std::vector<int> perArmConfiguration = {2, 3, 4, 4, 4, 4, 4, 4, 4, 4};
@@ -199,7 +199,8 @@ TEST(PmdRoadmapPlanner, NodesRecordTheDimensionThatMadeThem) {
   ToyRun run(withSeed(4));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   std::map<int, std::size_t> counted;
-  for (NodeIndex i = 2; i < run.planner.roadmap().nodeCount(); ++i) ++counted[run.planner.roadmap().node(i).handDimension];
+  for (NodeIndex i = 2; i < run.planner.roadmap().nodeCount(); ++i)
+    ++counted[run.planner.roadmap().node(i).handDimension];
   EXPECT_EQ(counted, run.planner.statistics().nodesByHandDimension);
   EXPECT_EQ(run.planner.roadmap().node(0).handDimension, 0) << "c_ini";
   EXPECT_EQ(run.planner.roadmap().node(1).handDimension, 0) << "c_goal";
@@ -219,13 +220,13 @@ TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheSampleLimit) {
 
 /// The same answer for every state and for every arm.
 class FixedAnswers : public StateValidator {
-public:
+ public:
   FixedAnswers(bool states, bool arms) : states_(states), arms_(arms) {}
   bool isValid(const Configuration&) override { return ++checks_, states_; }
   bool isArmValid(const Configuration&) override { return ++checks_, arms_; }
   std::size_t checkCount() const override { return checks_; }
 
-private:
+ private:
   bool states_, arms_;
   std::size_t checks_ = 0;
 };
@@ -257,9 +258,9 @@ TEST(PmdRoadmapPlanner, ArmBoxesGrowSweepBySweep) {
     });
     EXPECT_EQ(planner.solve(), PlannerStatus::SampleLimit);
     ASSERT_GE(halfSizes.size(), 8u);
-    const std::vector<double> expected = growth == ArmBoxGrowth::Factorial
-                                             ? std::vector<double>{0.001, 0.002, 0.006, 0.024, 0.12, 0.72, 1.0, 1.0}
-                                             : std::vector<double>{0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.007, 0.008};
+    const std::vector<double> expected =
+        growth == ArmBoxGrowth::Factorial ? std::vector<double>{0.001, 0.002, 0.006, 0.024, 0.12, 0.72, 1.0, 1.0}
+                                          : std::vector<double>{0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.007, 0.008};
     for (std::size_t k = 0; k < expected.size(); ++k) {
       EXPECT_NEAR(halfSizes[k], expected[k], 1e-15) << "sweep " << k + 1;
       // STEPS: the hypercube centres are at most rho_a apart along the 0.8-long arm segment.
@@ -272,14 +273,14 @@ TEST(PmdRoadmapPlanner, ArmBoxesGrowSweepBySweep) {
 
 /// Every motion free except into or out of the goal, which nothing reaches.
 class GoalUnreachable : public MotionValidator {
-public:
+ public:
   bool isValid(const Configuration& from, const Configuration& to) override {
     ++states_;
     return from != toy::goal() && to != toy::goal();
   }
   std::size_t statesChecked() const override { return states_; }
 
-private:
+ private:
   std::size_t states_ = 0;
 };
 
@@ -305,7 +306,8 @@ TEST(PmdRoadmapPlanner, ANarrowSearchRangeIsPassedOverAgainBeforeRhoGrows) {
     EXPECT_EQ(planner.solve(), PlannerStatus::SampleLimit);
     ASSERT_GE(visits.size(), 4u);
     // Sweep 1 visits c_ini's and c_goal's hypercubes, and the range is [1, 1] from then on.
-    for (std::size_t k = 1; k + 1 < visits.size(); ++k) EXPECT_EQ(visits[k], minimum == 1 ? 2u : minimum) << "sweep " << k + 1;
+    for (std::size_t k = 1; k + 1 < visits.size(); ++k)
+      EXPECT_EQ(visits[k], minimum == 1 ? 2u : minimum) << "sweep " << k + 1;
   }
 }
 

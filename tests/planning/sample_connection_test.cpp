@@ -15,7 +15,7 @@ NodeIndex addAt(Roadmap& roadmap, double x, double y) {
 
 /// Records every segment asked about; free unless it crosses the line x = `wallX`.
 class RecordingMotionValidator : public MotionValidator {
-public:
+ public:
   double wallX = 100.0;
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> asked;
   bool isValid(const Configuration& from, const Configuration& to) override {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "pmdplan/core/input_error.hpp"
 #include "planning/toy_problem.hpp"
+#include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan {
 namespace {

@@ -23,7 +23,7 @@ namespace pmdplan::toy {
 
 inline PlanningSpace space() {
   PlanningSpace s;
-  s.joints = {{"shoulder", -1.0, 1.0}, {"elbow", -2.0, 2.0},  {"thumb_base", 0.0, 1.5},
+  s.joints = {{"shoulder", -1.0, 1.0}, {"elbow", -2.0, 2.0},    {"thumb_base", 0.0, 1.5},
               {"finger_a", 0.0, 1.0},  {"finger_b", -0.5, 0.5}, {"finger_c", -0.3, 0.9}};
   s.armIndices = {0, 1};
   s.handIndices = {2, 3, 4, 5};
@@ -72,7 +72,7 @@ struct Wall {
 };
 
 class WallStateValidator : public StateValidator {
-public:
+ public:
   explicit WallStateValidator(Wall wall = {}) : wall_(wall), space_(space()) {}
   bool isValid(const Configuration& q) override {
     ++checks_;
@@ -84,14 +84,14 @@ public:
   }
   std::size_t checkCount() const override { return checks_; }
 
-private:
+ private:
   Wall wall_;
   PlanningSpace space_;
   std::size_t checks_ = 0;
 };
 
 class WallMotionValidator : public MotionValidator {
-public:
+ public:
   explicit WallMotionValidator(Wall wall = {}) : wall_(wall), space_(space()) {}
   bool isValid(const Configuration& from, const Configuration& to) override {
     ++calls_;
@@ -118,7 +118,7 @@ public:
   std::size_t statesChecked() const override { return states_; }
   std::size_t calls() const { return calls_; }
 
-private:
+ private:
   Wall wall_;
   PlanningSpace space_;
   std::size_t calls_ = 0;

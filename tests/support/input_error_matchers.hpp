@@ -10,8 +10,8 @@
 
 namespace pmdplan::test {
 
-inline void expectInputError(const std::function<void()>& action, const std::string& file,
-                             const std::string& fieldPart, const std::string& messagePart) {
+inline void expectInputError(const std::function<void()>& action, const std::string& file, const std::string& fieldPart,
+                             const std::string& messagePart) {
   try {
     action();
     ADD_FAILURE() << "expected an InputError about " << fieldPart;

@@ -8,7 +8,7 @@
 namespace pmdplan::test {
 
 class TempDir {
-public:
+ public:
   TempDir() {
     std::random_device device;
     path_ = std::filesystem::temp_directory_path() / ("pmdplan-test-" + std::to_string(device()));
@@ -26,7 +26,7 @@ public:
     return file;
   }
 
-private:
+ private:
   std::filesystem::path path_;
 };
 

@@ -15,8 +15,10 @@ TEST(Figure7JointPairs, TheSixPairsOfThePaper) {
 }
 
 TEST(Figure7JointPairs, PaperSignsNegateFlexionJoints) {
-  for (const char* joint : {"thumb_base", "thumb_proximal", "index_medium", "ring_distal"}) EXPECT_EQ(paperSignOf(joint), -1.0) << joint;
-  for (const char* joint : {"thumb_abduction", "middle_abduction", "ring_abduction"}) EXPECT_EQ(paperSignOf(joint), 1.0) << joint;
+  for (const char* joint : {"thumb_base", "thumb_proximal", "index_medium", "ring_distal"})
+    EXPECT_EQ(paperSignOf(joint), -1.0) << joint;
+  for (const char* joint : {"thumb_abduction", "middle_abduction", "ring_abduction"})
+    EXPECT_EQ(paperSignOf(joint), 1.0) << joint;
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "support/temp_dir.hpp"
 #include "support/input_error_matchers.hpp"
+#include "support/temp_dir.hpp"
 
 namespace pmdplan {
 namespace {
@@ -84,20 +84,36 @@ TEST(GraspItImport, ReordersByEigenvalueAndSaysSo) {
 }
 
 TEST(GraspItImport, BadInputNamesFileAndLine) {
-  test::expectInputError([] { parseGraspItEigengrasps("<EigenGrasps dimensions=\"3\">\n<EG>\n</EigenGrasps>", "g.xml", {"f1", "f2", "f3"}, hand()); },
-                         "g.xml", "line 2", "XML error");
-  test::expectInputError([] { parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2"}, hand()); }, "g.xml",
-                         "line 2 (dimensions)", "3 dimensions but 2 joints");
-  test::expectInputError([] { parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2", "wrist"}, hand()); }, "",
-                         "joints", "'wrist' (dimension 2) is not one of the hand joints");
+  test::expectInputError(
+      [] {
+        parseGraspItEigengrasps("<EigenGrasps dimensions=\"3\">\n<EG>\n</EigenGrasps>", "g.xml", {"f1", "f2", "f3"},
+                                hand());
+      },
+      "g.xml", "line 2", "XML error");
+  test::expectInputError(
+      [] {
+        parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2"}, hand());
+      },
+      "g.xml", "line 2 (dimensions)", "3 dimensions but 2 joints");
+  test::expectInputError(
+      [] {
+        parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2", "wrist"}, hand());
+      },
+      "", "joints", "'wrist' (dimension 2) is not one of the hand joints");
   std::string beyond = kOrthogonalFile;
   beyond.replace(beyond.find("d1=\"1.5\""), 8, "d1=\"2.5\"");
-  test::expectInputError([&] { parseGraspItEigengrasps(beyond, "g.xml", {"f1", "f2", "spread"}, hand()); }, "g.xml",
-                         "line 13 (ORIGIN.d1)", "beyond the limits");
+  test::expectInputError(
+      [&] {
+        parseGraspItEigengrasps(beyond, "g.xml", {"f1", "f2", "spread"}, hand());
+      },
+      "g.xml", "line 13 (ORIGIN.d1)", "beyond the limits");
   std::string notNumber = kOrthogonalFile;
   notNumber.replace(notNumber.find("d2=\"2\""), 6, "d2=\"x\"");
-  test::expectInputError([&] { parseGraspItEigengrasps(notNumber, "g.xml", {"f1", "f2", "spread"}, hand()); }, "g.xml",
-                         "line 9 (eigengrasp 2.d2)", "not a number");
+  test::expectInputError(
+      [&] {
+        parseGraspItEigengrasps(notNumber, "g.xml", {"f1", "f2", "spread"}, hand());
+      },
+      "g.xml", "line 9 (eigengrasp 2.d2)", "not a number");
 }
 
 }  // namespace

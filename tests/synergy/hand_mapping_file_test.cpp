@@ -6,7 +6,6 @@
 #include <set>
 
 #include "pmdplan/core/atomic_file.hpp"
-
 #include "pmdplan/glove/cyberglove_sensors.hpp"
 #include "sah_hand_joints.hpp"
 #include "support/input_error_matchers.hpp"
@@ -57,7 +56,8 @@ TEST(HandMappingFile, RoundTripsToIdenticalRules) {
 }
 
 TEST(HandMappingFile, SeveralSensorsPerJoint) {
-  const auto mapping = parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: 0.5, IndexPIJ: 0.25}, offset: -0.1}\n", "m.yaml");
+  const auto mapping =
+      parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: 0.5, IndexPIJ: 0.25}, offset: -0.1}\n", "m.yaml");
   ASSERT_EQ(mapping.rules.at(0).terms.size(), 2u);
   EXPECT_EQ(mapping.rules[0].terms[1].gain, 0.25);
   EXPECT_EQ(mapping.rules[0].offset, -0.1);
@@ -66,7 +66,10 @@ TEST(HandMappingFile, SeveralSensorsPerJoint) {
 
 TEST(HandMappingFile, UnknownSensorNamesTheLine) {
   test::expectInputError(
-      [] { parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: 1}}\n  - {joint: b, sensors: {IndexMCP: 1}}\n", "m.yaml"); },
+      [] {
+        parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: 1}}\n  - {joint: b, sensors: {IndexMCP: 1}}\n",
+                         "m.yaml");
+      },
       "m.yaml", "line 3 (joint b)", "unknown sensor 'IndexMCP'");
 }
 
@@ -74,19 +77,21 @@ TEST(HandMappingFile, UnknownJointIsFoundAgainstTheRobotWithItsLine) {
   std::string text = readTextFile(kPaperMapping);
   text.replace(text.find("joint: ring_medium"), 18, "joint: ring_distal");
   const HandMapping mapping = parseHandMapping(text, "mine.yaml");
-  test::expectInputError([&] { rulesForJoints(mapping, test::sahHandJoints()); }, "mine.yaml", "line 29 (joint ring_distal)",
-                         "unknown joint 'ring_distal'");
+  test::expectInputError([&] { rulesForJoints(mapping, test::sahHandJoints()); }, "mine.yaml",
+                         "line 29 (joint ring_distal)", "unknown joint 'ring_distal'");
 }
 
 TEST(HandMappingFile, MalformedRulesNameTheLine) {
-  test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: 1}, constant: 0}\n", "m.yaml"); },
-                         "m.yaml", "line 2 (joint a)", "either sensors");
-  test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, constant: 0}\n  - {joint: a, constant: 0}\n", "m.yaml"); },
-                         "m.yaml", "line 3 (joint a)", "listed twice");
-  test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: one}}\n", "m.yaml"); }, "m.yaml",
-                         "line 2", "not a finite number");
-  test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, sensor: IndexMPJ}\n", "m.yaml"); }, "m.yaml", "line 2",
-                         "unknown key 'sensor'");
+  test::expectInputError(
+      [] { parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: 1}, constant: 0}\n", "m.yaml"); }, "m.yaml",
+      "line 2 (joint a)", "either sensors");
+  test::expectInputError(
+      [] { parseHandMapping("joints:\n  - {joint: a, constant: 0}\n  - {joint: a, constant: 0}\n", "m.yaml"); },
+      "m.yaml", "line 3 (joint a)", "listed twice");
+  test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: one}}\n", "m.yaml"); },
+                         "m.yaml", "line 2", "not a finite number");
+  test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, sensor: IndexMPJ}\n", "m.yaml"); }, "m.yaml",
+                         "line 2", "unknown key 'sensor'");
 }
 
 }  // namespace

@@ -73,7 +73,8 @@ TEST(HandMapping, UnknownJointNamesTheMappingLine) {
 TEST(HandMapping, EveryRobotJointNeedsExactlyOneRule) {
   HandMapping m = mapping();
   m.rules.pop_back();
-  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "joints", "no rule for the robot's hand joint spare");
+  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "joints",
+                         "no rule for the robot's hand joint spare");
   m = mapping();
   m.rules.push_back({"roll", {}, 0.1, 9});
   test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "line 9", "a second rule for joint roll");
@@ -82,7 +83,8 @@ TEST(HandMapping, EveryRobotJointNeedsExactlyOneRule) {
 TEST(HandMapping, ConstantOutsideTheLimitsIsAnError) {
   HandMapping m = mapping();
   m.rules[3].offset = 0.5;
-  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "line 6 (joint spare)", "outside the joint's limits");
+  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "line 6 (joint spare)",
+                         "outside the joint's limits");
 }
 
 }  // namespace

@@ -29,8 +29,8 @@ TEST(PmdPostureFilter, KeepsTheOwnAxisAndTheFirstPmdsComponent) {
   // Normalised a = 0.75, b = 0.55: deviation (0.25, 0.05) -> along PMD 1: 0.15 each.
   const Eigen::Vector3d posture(0.55, 1.3, 0.5);  // b, own, a (a = 0.5 is 0.75 normalised)
   const Eigen::VectorXd filtered = filter.filter(posture);
-  EXPECT_DOUBLE_EQ(filtered(1), 1.3);           // own axis untouched
-  EXPECT_NEAR(filtered(0), 0.65, 1e-12);        // b: 0.5 + 0.15
+  EXPECT_DOUBLE_EQ(filtered(1), 1.3);             // own axis untouched
+  EXPECT_NEAR(filtered(0), 0.65, 1e-12);          // b: 0.5 + 0.15
   EXPECT_NEAR(filtered(2), 2 * 0.65 - 1, 1e-12);  // a: normalised 0.65
 }
 

@@ -12,8 +12,10 @@ inline JointLimits sahHandJoints() {
   JointLimits joints{{"thumb_base", 0, 90 * deg}};
   for (const char* finger : {"thumb", "index", "middle", "ring"}) {
     const std::string name = finger;
-    if (name != "thumb") joints.push_back({name + "_abduction", -15 * deg, 15 * deg});
-    else joints.push_back({"thumb_abduction", -15 * deg, 15 * deg});
+    if (name != "thumb")
+      joints.push_back({name + "_abduction", -15 * deg, 15 * deg});
+    else
+      joints.push_back({"thumb_abduction", -15 * deg, 15 * deg});
     joints.push_back({name + "_proximal", -4 * deg, 75 * deg});
     joints.push_back({name + "_medium", 4 * deg, 75 * deg});
   }

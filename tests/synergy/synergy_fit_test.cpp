@@ -15,7 +15,7 @@ namespace {
 
 // Five PCA joints with different ranges, one own-axis joint and one constant joint.
 JointLimits testJoints() {
-  return {{"spin", -1.0, 2.0}, {"a", 0.0, 1.0}, {"b", -0.5, 0.5}, {"fixed", -0.2, 0.2},
+  return {{"spin", -1.0, 2.0}, {"a", 0.0, 1.0},  {"b", -0.5, 0.5}, {"fixed", -0.2, 0.2},
           {"c", 0.1, 1.6},     {"d", -3.0, 3.0}, {"e", 0.0, 0.25}};
 }
 const std::vector<int> kPcaColumns{1, 2, 4, 5, 6};
@@ -42,10 +42,13 @@ AnalyticCase analyticCase() {
   for (int f = 0; f < 32 * repeats; ++f) {
     Eigen::VectorXd z(5);
     for (int k = 0; k < 5; ++k) z(k) = ((f % 32) >> k) & 1 ? 1.0 : -1.0;
-    const Eigen::VectorXd unit = Eigen::VectorXd::Constant(5, 0.5) + c.directions * (c.variances.cwiseSqrt().asDiagonal() * z);
-    for (int k = 0; k < 5; ++k) c.postures(f, kPcaColumns[static_cast<std::size_t>(k)]) = joints[static_cast<std::size_t>(kPcaColumns[static_cast<std::size_t>(k)])].denormalise(unit(k));
+    const Eigen::VectorXd unit =
+        Eigen::VectorXd::Constant(5, 0.5) + c.directions * (c.variances.cwiseSqrt().asDiagonal() * z);
+    for (int k = 0; k < 5; ++k)
+      c.postures(f, kPcaColumns[static_cast<std::size_t>(k)]) =
+          joints[static_cast<std::size_t>(kPcaColumns[static_cast<std::size_t>(k)])].denormalise(unit(k));
     c.postures(f, 0) = joints[0].denormalise(0.5 + 0.4 * std::sin(0.37 * f));  // the own-axis joint wanders on its own
-    c.postures(f, 3) = 0.0;                                                     // fixed
+    c.postures(f, 3) = 0.0;                                                    // fixed
   }
   return c;
 }
@@ -109,28 +112,38 @@ TEST(SynergyFit, CorrelationMatrixOverTheMovingJoints) {
 
 TEST(SynergyFit, FewerFramesThanJointsIsAnError) {
   const Eigen::MatrixXd postures = analyticCase().postures.topRows(5);  // 5 frames, 5 PCA joints
-  test::expectInputError([&] { fitSynergyModel(postures, testJoints(), ownSpin(), {"rec.csv", "lines 2-6", ""}); },
-                         "rec.csv", "lines 2-6", "5 frames for 5 joints in the PCA; need at least 6");
+  test::expectInputError(
+      [&] {
+        fitSynergyModel(postures, testJoints(), ownSpin(), {"rec.csv", "lines 2-6", ""});
+      },
+      "rec.csv", "lines 2-6", "5 frames for 5 joints in the PCA; need at least 6");
   EXPECT_NO_THROW(fitSynergyModel(analyticCase().postures.topRows(6), testJoints(), ownSpin(), {}));
 }
 
 TEST(SynergyFit, ConstantDataSetIsAnError) {
   Eigen::MatrixXd postures = analyticCase().postures;
   for (const int column : kPcaColumns) postures.col(column).setConstant(postures(0, column));
-  test::expectInputError([&] { fitSynergyModel(postures, testJoints(), ownSpin(), {"rec.csv", "lines 2-1281", ""}); },
-                         "rec.csv", "lines 2-1281", "constant data set");
+  test::expectInputError(
+      [&] {
+        fitSynergyModel(postures, testJoints(), ownSpin(), {"rec.csv", "lines 2-1281", ""});
+      },
+      "rec.csv", "lines 2-1281", "constant data set");
 }
 
 TEST(SynergyFit, PosturesBeyondTheLimitsAreAnError) {
   Eigen::MatrixXd postures = analyticCase().postures;
   postures(10, 6) = 0.3;  // joint e ends at 0.25
-  test::expectInputError([&] { fitSynergyModel(postures, testJoints(), ownSpin(), {"rec.csv", "lines 2-9", ""}); },
-                         "rec.csv", "lines 2-9", "joint e leaves its limits");
+  test::expectInputError(
+      [&] {
+        fitSynergyModel(postures, testJoints(), ownSpin(), {"rec.csv", "lines 2-9", ""});
+      },
+      "rec.csv", "lines 2-9", "joint e leaves its limits");
 }
 
 TEST(SynergyFit, UnknownOwnAxisJointIsAnError) {
-  test::expectInputError([] { fitSynergyModel(analyticCase().postures, testJoints(), SynergyFitOptions{{"thumb"}}, {}); }, "",
-                         "own-axis", "'thumb' is not one of the hand joints");
+  test::expectInputError(
+      [] { fitSynergyModel(analyticCase().postures, testJoints(), SynergyFitOptions{{"thumb"}}, {}); }, "", "own-axis",
+      "'thumb' is not one of the hand joints");
 }
 
 TEST(SynergyFit, ProvenanceGoesIntoTheModel) {

@@ -4,8 +4,8 @@
 
 #include <Eigen/QR>
 
-#include "support/temp_dir.hpp"
 #include "support/input_error_matchers.hpp"
+#include "support/temp_dir.hpp"
 
 namespace pmdplan {
 namespace {
@@ -18,7 +18,8 @@ SynergyModel sampleModel() {
   model.mean << 0.7, 0.1 + 0.2, 0.55, 1.0 / 3.0;
   Eigen::MatrixXd seed(3, 2);
   seed << 0.3, 0.8, -0.6, 0.1, 0.5, 0.4;
-  const Eigen::MatrixXd q = Eigen::HouseholderQR<Eigen::MatrixXd>(seed).householderQ() * Eigen::MatrixXd::Identity(3, 2);
+  const Eigen::MatrixXd q =
+      Eigen::HouseholderQR<Eigen::MatrixXd>(seed).householderQ() * Eigen::MatrixXd::Identity(3, 2);
   model.directions = Eigen::MatrixXd::Zero(4, 2);
   model.directions.bottomRows(3) = q;
   model.sigma.resize(2);
@@ -69,8 +70,11 @@ std::string withDirections(const std::string& first, const std::string& second, 
          "own_axis_joints: []\northonormal: " +
          std::string(orthonormal ? "true" : "false") +
          "\nmean: [0.5, 0.5]\ndirections:\n"
-         "  - {sigma: 0.2, variance_fraction: 0.8, vector: " + first + "}\n"
-         "  - {sigma: 0.1, variance_fraction: 0.2, vector: " + second + "}\n";
+         "  - {sigma: 0.2, variance_fraction: 0.8, vector: " +
+         first +
+         "}\n"
+         "  - {sigma: 0.1, variance_fraction: 0.2, vector: " +
+         second + "}\n";
 }
 
 TEST(SynergyModelFile, NonOrthonormalDirectionsNameTheLine) {
@@ -92,17 +96,29 @@ TEST(SynergyModelFile, DirectionsMustBeUnitVectors) {
 
 TEST(SynergyModelFile, SizesAndRangesAreChecked) {
   std::string text = withDirections("[1, 0]", "[0, 1]");
-  test::expectInputError([&] { parseSynergyModel(std::string(text).replace(text.find("vector: [1, 0]"), 14, "vector: [1]"), "m.yaml"); },
-                         "m.yaml", "line 8", "1 values for 2 joints");
-  test::expectInputError([&] { parseSynergyModel(std::string(text).replace(text.find("[0.5, 0.5]"), 10, "[0.5, 1.5]"), "m.yaml"); },
-                         "m.yaml", "line 6 (mean)", "normalised values lie in [0, 1]");
-  test::expectInputError([&] { parseSynergyModel(std::string(text).replace(text.find("sigma: 0.1"), 10, "sigma: -1"), "m.yaml"); },
-                         "m.yaml", "line 9", "sigma must be zero or positive");
-  test::expectInputError([&] { parseSynergyModel(std::string(text).replace(text.find("own_axis_joints: []"), 19, "own_axis_joints: [a]"), "m.yaml"); },
-                         "m.yaml", "line 8 (directions[0])", "moves own-axis joint a");
-  test::expectInputError([&] { parseSynergyModel(std::string(text).replace(text.find("own_axis_joints: []"), 19, "own_axis_joints: [z]"), "m.yaml"); },
-                         "m.yaml", "line 4 (own_axis_joints)", "'z' is not among the joints");
-  test::expectInputError([&] { parseSynergyModel(text + "kappa: 2\n", "m.yaml"); }, "m.yaml", "line 10", "unknown key 'kappa'");
+  test::expectInputError(
+      [&] { parseSynergyModel(std::string(text).replace(text.find("vector: [1, 0]"), 14, "vector: [1]"), "m.yaml"); },
+      "m.yaml", "line 8", "1 values for 2 joints");
+  test::expectInputError(
+      [&] { parseSynergyModel(std::string(text).replace(text.find("[0.5, 0.5]"), 10, "[0.5, 1.5]"), "m.yaml"); },
+      "m.yaml", "line 6 (mean)", "normalised values lie in [0, 1]");
+  test::expectInputError(
+      [&] { parseSynergyModel(std::string(text).replace(text.find("sigma: 0.1"), 10, "sigma: -1"), "m.yaml"); },
+      "m.yaml", "line 9", "sigma must be zero or positive");
+  test::expectInputError(
+      [&] {
+        parseSynergyModel(std::string(text).replace(text.find("own_axis_joints: []"), 19, "own_axis_joints: [a]"),
+                          "m.yaml");
+      },
+      "m.yaml", "line 8 (directions[0])", "moves own-axis joint a");
+  test::expectInputError(
+      [&] {
+        parseSynergyModel(std::string(text).replace(text.find("own_axis_joints: []"), 19, "own_axis_joints: [z]"),
+                          "m.yaml");
+      },
+      "m.yaml", "line 4 (own_axis_joints)", "'z' is not among the joints");
+  test::expectInputError([&] { parseSynergyModel(text + "kappa: 2\n", "m.yaml"); }, "m.yaml", "line 10",
+                         "unknown key 'kappa'");
 }
 
 TEST(SynergyModelFile, ModelsBuiltInCodeAreCheckedOnSave) {

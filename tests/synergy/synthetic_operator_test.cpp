@@ -1,5 +1,7 @@
 // The synthetic operator through the real path (raw CSV text -> read -> calibrate -> map -> PCA)
 // reproduces the paper's statistics (issue 3, "Done when" 1), and is deterministic.
+#include "pmdplan/synergy/synthetic_operator.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,13 +12,14 @@
 #include "pmdplan/synergy/figure7_joint_pairs.hpp"
 #include "pmdplan/synergy/hand_mapping_file.hpp"
 #include "pmdplan/synergy/recording_analysis.hpp"
-#include "pmdplan/synergy/synthetic_operator.hpp"
 #include "sah_hand_joints.hpp"
 
 namespace pmdplan {
 namespace {
 
-HandMapping paperMapping() { return loadHandMapping(std::string(PMDPLAN_TEST_DATA_DIR) + "/glove/cyberglove22_to_sah.yaml"); }
+HandMapping paperMapping() {
+  return loadHandMapping(std::string(PMDPLAN_TEST_DATA_DIR) + "/glove/cyberglove22_to_sah.yaml");
+}
 
 double correlation(const SynergyFit& fit, const std::string& a, const std::string& b) {
   const auto index = [&](const std::string& name) {
@@ -29,7 +32,7 @@ double correlation(const SynergyFit& fit, const std::string& a, const std::strin
 }
 
 class PaperSizedRecording : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() {
     const JointLimits joints = test::sahHandJoints();
     const HandMapping mapping = paperMapping();

@@ -95,7 +95,7 @@ TEST(GraspGoal, AGivenPregraspThatTouchesTheTargetIsRefused) {
 }
 
 class GraspPlanning : public ::testing::Test {
-protected:
+ protected:
   GraspPlanning()
       : task_(test::graspingTask(kDepth)),
         checking_(task_, CheckerKind::Fast),
@@ -148,8 +148,9 @@ TEST_F(GraspPlanning, ValidationRejectsAClosingThatTouchesAnotherObstacle) {
   const Configuration middle = 0.5 * (result_.path[*result_.closingFrom] + task_.goal);
   const auto poses = checking_.exact().kinematics().linkPoses(middle);
   Task blocked = task_;
-  blocked.obstacles.push_back({"stray_ball", SphereShape{0.003},
-                               Eigen::Isometry3d(Eigen::Translation3d(poses[task_.robot->linkIndex("index_distal_link")].translation()))});
+  blocked.obstacles.push_back(
+      {"stray_ball", SphereShape{0.003},
+       Eigen::Isometry3d(Eigen::Translation3d(poses[task_.robot->linkIndex("index_distal_link")].translation()))});
   ExactCollisionChecker checker(blocked);
   const SegmentChecker segments(checker, *blocked.robot);
   const auto validation = validateTaskPath(checker, segments, blocked, result_.path, result_.closingFrom);

@@ -56,7 +56,8 @@ TEST(HandSelfCollision, EachFingerFlexedAloneAtItsLimitsIsFree) {
   for (const std::string finger : {"index", "middle", "ring"})
     for (double proximal : {-4.0, 75.0})
       for (double medium : {4.0, 75.0}) {
-        const auto report = checker.check(withHand(model, {{finger + "_proximal", proximal}, {finger + "_medium", medium}}));
+        const auto report =
+            checker.check(withHand(model, {{finger + "_proximal", proximal}, {finger + "_medium", medium}}));
         EXPECT_TRUE(report.free()) << finger << " " << proximal << "/" << medium << ": " << describe(report);
       }
 }
@@ -81,19 +82,26 @@ TEST(HandSelfCollision, TheThumbDrivenIntoTheIndexFingerCollides) {
   ExactCollisionChecker checker(task);
   const auto& model = *task.robot;
   // Thumb fully opposed and flexed across the palm while the index finger curls onto it.
-  const Configuration q = withHand(model, {{"thumb_base", 90}, {"thumb_abduction", 15}, {"thumb_proximal", 60},
-                                           {"thumb_medium", 40}, {"index_proximal", 75}, {"index_medium", 40}});
+  const Configuration q = withHand(model, {{"thumb_base", 90},
+                                           {"thumb_abduction", 15},
+                                           {"thumb_proximal", 60},
+                                           {"thumb_medium", 40},
+                                           {"index_proximal", 75},
+                                           {"index_medium", 40}});
   const auto report = checker.check(q);
   ASSERT_FALSE(report.free());
   bool thumbIndex = false;
   for (const auto& [a, b] : report.pairs)
-    thumbIndex |= (a.rfind("thumb", 0) == 0 && b.rfind("index", 0) == 0) || (a.rfind("index", 0) == 0 && b.rfind("thumb", 0) == 0);
+    thumbIndex |= (a.rfind("thumb", 0) == 0 && b.rfind("index", 0) == 0) ||
+                  (a.rfind("index", 0) == 0 && b.rfind("thumb", 0) == 0);
   EXPECT_TRUE(thumbIndex) << describe(report);
 }
 
 bool reportsPair(const CollisionReport& report, const std::string& fingerA, const std::string& fingerB) {
   for (const auto& [a, b] : report.pairs)
-    if ((a.rfind(fingerA, 0) == 0 && b.rfind(fingerB, 0) == 0) || (a.rfind(fingerB, 0) == 0 && b.rfind(fingerA, 0) == 0)) return true;
+    if ((a.rfind(fingerA, 0) == 0 && b.rfind(fingerB, 0) == 0) ||
+        (a.rfind(fingerB, 0) == 0 && b.rfind(fingerA, 0) == 0))
+      return true;
   return false;
 }
 
@@ -124,9 +132,11 @@ TEST(HandSelfCollision, AdjacentFingersSpreadApartAreFree) {
 }
 
 /// The smallest symmetric adduction (degrees, 0.25 steps) at which two adjacent straight fingers touch.
-double firstContactAdduction(ExactCollisionChecker& checker, const RobotModel& model, const std::string& a, const std::string& b) {
+double firstContactAdduction(ExactCollisionChecker& checker, const RobotModel& model, const std::string& a,
+                             const std::string& b) {
   for (double angle = 0.0; angle <= 15.0; angle += 0.25)
-    if (reportsPair(checker.check(withHand(model, {{a + "_abduction", angle}, {b + "_abduction", -angle}})), a, b)) return angle;
+    if (reportsPair(checker.check(withHand(model, {{a + "_abduction", angle}, {b + "_abduction", -angle}})), a, b))
+      return angle;
   return 1e9;
 }
 
@@ -151,8 +161,8 @@ TEST(HandSelfCollision, ThickFingersTouchAtRealisticAdductionAndFillTheHandBox) 
     colliding += !checker.check(q).free();
   }
   const double share = static_cast<double>(colliding) / kSamples;
-  std::printf("index and middle first touch at %.2f deg adduction each; %.1f %% of %d full-box hands self-collide\n", touch,
-              100.0 * share, kSamples);
+  std::printf("index and middle first touch at %.2f deg adduction each; %.1f %% of %d full-box hands self-collide\n",
+              touch, 100.0 * share, kSamples);
   EXPECT_LE(touch, 5.0);
   EXPECT_GT(share, 0.6);
 }

@@ -58,9 +58,10 @@ const std::set<std::string> kSupports = {"table", "floor"};
 const std::set<std::string> kNotYetRelevant = {
     // published places; the straight segment touches only the T's stem, the goal hand is 32 mm
     // above the board the T stands on and the palm stays in front of the shelf
-    "cans_in_shelf/shelf_panel_left+shelf_panel_right+shelf_board_0+shelf_board_1+shelf_board_2+shelf_board_3+shelf_board_4",
-    "cans_in_shelf/right_can",  // published, beside the T: 20 mm from the goal palm
-    "cans_in_shelf/left_can",   // published, beside the T
+    "cans_in_shelf/"
+    "shelf_panel_left+shelf_panel_right+shelf_board_0+shelf_board_1+shelf_board_2+shelf_board_3+shelf_board_4",
+    "cans_in_shelf/right_can",      // published, beside the T: 20 mm from the goal palm
+    "cans_in_shelf/left_can",       // published, beside the T
     "t_in_clutter/mug+mug_handle",  // our layout: elsewhere on the table
     "t_in_clutter/lying_book",      // our layout: 30 mm high, far below the passage
 };
@@ -71,9 +72,8 @@ struct PlanOutcome {
   std::size_t nodes, samples, armTrials;
   bool operator==(const PlanOutcome& o) const {
     return status == o.status && nodes == o.nodes && samples == o.samples && armTrials == o.armTrials &&
-           path.size() == o.path.size() && std::equal(path.begin(), path.end(), o.path.begin(), [](const auto& a, const auto& b) {
-             return a == b;
-           });
+           path.size() == o.path.size() &&
+           std::equal(path.begin(), path.end(), o.path.begin(), [](const auto& a, const auto& b) { return a == b; });
   }
 };
 
@@ -91,7 +91,8 @@ PlanOutcome plan(const Task& task, const SynergyModel& model, std::uint64_t seed
 Task without(const Task& task, const std::vector<std::string>& names) {
   Task reduced = task;
   std::erase_if(reduced.obstacles, [&](const Obstacle& o) { return std::ranges::find(names, o.name) != names.end(); });
-  EXPECT_EQ(reduced.obstacles.size() + names.size(), task.obstacles.size()) << "a listed obstacle is not in " << task.name;
+  EXPECT_EQ(reduced.obstacles.size() + names.size(), task.obstacles.size())
+      << "a listed obstacle is not in " << task.name;
   return reduced;
 }
 
@@ -130,8 +131,8 @@ TEST_P(ObstacleRelevance, RemovingAnyObjectChangesASeededPlan) {
       if (!listed && factor == 1.0)
         EXPECT_GT(changed, 0) << task.name << " without " << joined(object) << ", radius factor " << factor
                               << ": every seed plans as with it";
-      std::printf("%s without %s, radius factor %.0f: %d of %zu seeds change%s\n", task.name.c_str(), joined(object).c_str(),
-                  factor, changed, seeds.size(),
+      std::printf("%s without %s, radius factor %.0f: %d of %zu seeds change%s\n", task.name.c_str(),
+                  joined(object).c_str(), factor, changed, seeds.size(),
                   listed ? (changed ? " (listed as not yet relevant: it now matters)" : " (not yet relevant)") : "");
     }
   }

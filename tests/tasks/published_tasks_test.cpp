@@ -20,7 +20,7 @@ Eigen::Isometry3d palmPose(ExactCollisionChecker& checker, const Configuration& 
 struct PublishedPalm {
   std::string task;
   bool goal;
-  Eigen::Vector3d position;            // m
+  Eigen::Vector3d position;  // m
   std::optional<Eigen::Vector3d> zAxis;
 };
 

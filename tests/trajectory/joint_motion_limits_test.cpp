@@ -1,9 +1,10 @@
 // Joint limits for timing: velocities from the URDF, accelerations from the joint-limits file or
 // the stated default, and a mimic joint's limits folded into its source's.
+#include "pmdplan/trajectory/joint_motion_limits.hpp"
+
 #include <gtest/gtest.h>
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/trajectory/joint_motion_limits.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {
@@ -30,7 +31,8 @@ TEST(JointMotionLimits, AMimicJointBoundsItsSourceAndTheDefaultsApply) {
 
 TEST(JointMotionLimits, TheFileBesideTheUrdfGivesAccelerationsAndLowersVelocities) {
   test::TempDir dir;
-  dir.write("two.joint_limits.yaml", "joint_limits:\n  lead: {max_velocity: 1.5, max_acceleration: 0.5}\n  follower: {max_acceleration: 8}\n");
+  dir.write("two.joint_limits.yaml",
+            "joint_limits:\n  lead: {max_velocity: 1.5, max_acceleration: 0.5}\n  follower: {max_acceleration: 8}\n");
   const RobotModel robot = RobotModel::load(dir.write("two.urdf", kUrdf));
   const auto limits = jointMotionLimits(robot);
   EXPECT_DOUBLE_EQ(limits[0].velocity, 1.5);

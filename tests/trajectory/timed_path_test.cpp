@@ -2,13 +2,14 @@
 // exceed a joint's velocity or acceleration limit, stay within the blending tolerance of the
 // polyline, start and end at rest on the first and last waypoint, and are as fast as the
 // closed-form optimum where there is one (a single straight segment).
+#include "pmdplan/trajectory/timed_path.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "pmdplan/core/random_source.hpp"
 #include "pmdplan/trajectory/joint_trajectory.hpp"
-#include "pmdplan/trajectory/timed_path.hpp"
 
 namespace pmdplan {
 namespace {
@@ -68,7 +69,8 @@ TEST(TimedPath, RandomPathsKeepEveryLimitAndTheBlendingTolerance) {
         worstVelocity = std::max(worstVelocity, std::abs(state.velocity[i]) / c.limits[j].velocity);
         worstAcceleration = std::max(worstAcceleration, std::abs(state.acceleration[i]) / c.limits[j].acceleration);
         // The reported velocity is the positions' real rate: over 1 ms no joint moves farther than it allows.
-        EXPECT_LE(std::abs(state.position[i] - previous.position[i]), c.limits[j].velocity * dt * (1.0 + kVelocitySlack) + 1e-12)
+        EXPECT_LE(std::abs(state.position[i] - previous.position[i]),
+                  c.limits[j].velocity * dt * (1.0 + kVelocitySlack) + 1e-12)
             << "seed " << seed << " joint " << j << " t " << t;
       }
       worstDeviation = std::max(worstDeviation, distanceToPolyline(state.position, c.waypoints));
@@ -90,7 +92,8 @@ TEST(TimedPath, AStraightSegmentTakesTheTrapezoidalOptimum) {
   const std::vector<JointMotionLimit> limits{{"a", 2.0, 4.0}, {"b", 1.0, 10.0}};
   for (double length : {0.05, 0.3, 1.0, 3.0}) {
     const Eigen::Vector2d direction = Eigen::Vector2d(3.0, 4.0).normalized();
-    const std::vector<Configuration> waypoints{Eigen::Vector2d(0.1, -0.2), Eigen::Vector2d(0.1, -0.2) + length * direction};
+    const std::vector<Configuration> waypoints{Eigen::Vector2d(0.1, -0.2),
+                                               Eigen::Vector2d(0.1, -0.2) + length * direction};
     const TimedPath timed(waypoints, limits);
     const double v = std::min(2.0 / direction[0], 1.0 / direction[1]);
     const double a = std::min(4.0 / direction[0], 10.0 / direction[1]);

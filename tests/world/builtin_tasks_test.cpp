@@ -12,8 +12,8 @@ namespace pmdplan {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-const std::array<std::string, 5> kTaskNames = {"can_on_table", "cans_on_desk", "can_in_box",
-                                               "cans_in_shelf", "t_in_clutter"};
+const std::array<std::string, 5> kTaskNames = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf",
+                                               "t_in_clutter"};
 
 Task loadBuiltIn(const std::string& name) {
   return loadTask(std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "scenes" / (name + ".yaml"));
@@ -22,25 +22,20 @@ Task loadBuiltIn(const std::string& name) {
 /// Arm J1..J6 then the hand in the order of docs/reference_data.md §5, degrees, positive = flexion.
 using PublishedConfiguration = std::array<double, 19>;
 const std::array<std::string, 19> kPublishedOrder = {
-    "tx90_joint_1", "tx90_joint_2", "tx90_joint_3", "tx90_joint_4", "tx90_joint_5",
-    "tx90_joint_6", "thumb_base", "thumb_abduction", "thumb_proximal", "thumb_medium",
-    "index_abduction", "index_proximal", "index_medium", "middle_abduction", "middle_proximal",
-    "middle_medium", "ring_abduction", "ring_proximal", "ring_medium"};
-constexpr PublishedConfiguration kStart013 = {-87.8, -37.6, 136.0, -20.5, 4.1, 109.6, 43.8,
-                                              -5.5, 17.7, 26.6, -2.9, 20.9, 13.2, 0.0,
-                                              15.3, 21.8, 2.4, 17.5, 17.7};
-constexpr PublishedConfiguration kGoal01 = {-81.4, 32.3, 89.9, -7.0, -30.1, 90.7, 90.0,
-                                            3.1, -2.6, 34.2, -0.5, 20.1, 30.7, 0.0,
-                                            22.0, 34.8, 2.6, 29.3, 28.7};
-constexpr PublishedConfiguration kStart2 = {-111.6, -0.4, 89.9, -12.4, 6.9, 112.3, 27.7,
-                                            -8.2, 28.4, 33.7, 4.6, 42.4, 28.1, 0.0,
-                                            40.2, 32.8, -3.3, 36.8, 29.9};
-constexpr PublishedConfiguration kGoal2 = {-78.5, 27.1, 61.5, -17.8, 82.9, 88.0, 74.3,
-                                           1.1, -3.8, 25.8, -10.4, 0.1, 26.7, 0.0,
-                                           -2.8, 41.0, 10.4, 12.5, 32.7};
-constexpr PublishedConfiguration kGoal3 = {-84.6, 27.3, 95.4, -7.0, -30.1, 90.7, 75.6,
-                                           -6.4, -4.0, 4.0, 1.3, 47.1, 4.0, 0.0,
-                                           46.6, 11.2, 0.1, 49.6, 9.3};
+    "tx90_joint_1",    "tx90_joint_2",   "tx90_joint_3",    "tx90_joint_4",     "tx90_joint_5",
+    "tx90_joint_6",    "thumb_base",     "thumb_abduction", "thumb_proximal",   "thumb_medium",
+    "index_abduction", "index_proximal", "index_medium",    "middle_abduction", "middle_proximal",
+    "middle_medium",   "ring_abduction", "ring_proximal",   "ring_medium"};
+constexpr PublishedConfiguration kStart013 = {-87.8, -37.6, 136.0, -20.5, 4.1,  109.6, 43.8, -5.5, 17.7, 26.6,
+                                              -2.9,  20.9,  13.2,  0.0,   15.3, 21.8,  2.4,  17.5, 17.7};
+constexpr PublishedConfiguration kGoal01 = {-81.4, 32.3, 89.9, -7.0, -30.1, 90.7, 90.0, 3.1,  -2.6, 34.2,
+                                            -0.5,  20.1, 30.7, 0.0,  22.0,  34.8, 2.6,  29.3, 28.7};
+constexpr PublishedConfiguration kStart2 = {-111.6, -0.4, 89.9, -12.4, 6.9,  112.3, 27.7, -8.2, 28.4, 33.7,
+                                            4.6,    42.4, 28.1, 0.0,   40.2, 32.8,  -3.3, 36.8, 29.9};
+constexpr PublishedConfiguration kGoal2 = {-78.5, 27.1, 61.5, -17.8, 82.9, 88.0, 74.3, 1.1,  -3.8, 25.8,
+                                           -10.4, 0.1,  26.7, 0.0,   -2.8, 41.0, 10.4, 12.5, 32.7};
+constexpr PublishedConfiguration kGoal3 = {-84.6, 27.3, 95.4, -7.0, -30.1, 90.7, 75.6, -6.4, -4.0, 4.0,
+                                           1.3,   47.1, 4.0,  0.0,  46.6,  11.2, 0.1,  49.6, 9.3};
 
 /// Every joint as published except `changed` (documented in the task file).
 void expectPublished(const Task& task, const Configuration& q, const PublishedConfiguration& degrees,
@@ -74,15 +69,13 @@ TEST(BuiltInTasks, AllFiveLoadWithTheHandArmModel) {
   }
 }
 
-TEST(BuiltInTasks, LoadByName) {
-  EXPECT_EQ(loadTaskByName("cans_in_shelf").obstacles.size(), 12u);
-}
+TEST(BuiltInTasks, LoadByName) { EXPECT_EQ(loadTaskByName("cans_in_shelf").obstacles.size(), 12u); }
 
 TEST(BuiltInTasks, ObstacleCounts) {
-  EXPECT_EQ(loadBuiltIn("can_on_table").obstacles.size(), 4u);   // floor, table, 2 cans
-  EXPECT_EQ(loadBuiltIn("cans_on_desk").obstacles.size(), 5u);   // + stacked can
-  EXPECT_EQ(loadBuiltIn("can_in_box").obstacles.size(), 7u);     // floor, table, 4 walls, can
-  EXPECT_EQ(loadBuiltIn("cans_in_shelf").obstacles.size(), 12u); // floor, 2 panels, 5 boards, 2 cans, T
+  EXPECT_EQ(loadBuiltIn("can_on_table").obstacles.size(), 4u);    // floor, table, 2 cans
+  EXPECT_EQ(loadBuiltIn("cans_on_desk").obstacles.size(), 5u);    // + stacked can
+  EXPECT_EQ(loadBuiltIn("can_in_box").obstacles.size(), 7u);      // floor, table, 4 walls, can
+  EXPECT_EQ(loadBuiltIn("cans_in_shelf").obstacles.size(), 12u);  // floor, 2 panels, 5 boards, 2 cans, T
   EXPECT_EQ(loadBuiltIn("t_in_clutter").obstacles.size(), 12u);
 }
 

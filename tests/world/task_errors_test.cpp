@@ -8,15 +8,15 @@
 namespace pmdplan {
 namespace {
 
-using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using test::kValidToyTask;
 using test::lineOf;
 using test::replaceOnce;
 using test::ToyTaskFolder;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
 
 class TaskErrors : public ::testing::Test {
-protected:
+ protected:
   ToyTaskFolder folder;
   std::string text;
   std::filesystem::path path;
@@ -52,7 +52,8 @@ TEST_F(TaskErrors, UnknownTopLevelKey) {
 }
 
 TEST_F(TaskErrors, APregraspNeedsATarget) {
-  const std::string withPregrasp = std::string(kValidToyTask) + "pregrasp:\n  joints: {wrist: 0.2, shoulder: -0.5, elbow: 1.0}\n";
+  const std::string withPregrasp =
+      std::string(kValidToyTask) + "pregrasp:\n  joints: {wrist: 0.2, shoulder: -0.5, elbow: 1.0}\n";
   const auto error = errorFor(replaceOnce(withPregrasp, "target: can\n", ""));
   expectField(error, "pregrasp", "  joints: {wrist: 0.2, shoulder");
   EXPECT_THAT(error.message(), HasSubstr("target"));
@@ -71,8 +72,8 @@ TEST_F(TaskErrors, UnknownKeyInBase) {
 }
 
 TEST_F(TaskErrors, UnknownKeyInCylinder) {
-  const auto error = errorFor(replaceOnce(kValidToyTask, "      length: 0.12\n",
-                                          "      length: 0.12\n      height: 0.12\n"));
+  const auto error =
+      errorFor(replaceOnce(kValidToyTask, "      length: 0.12\n", "      length: 0.12\n      height: 0.12\n"));
   expectField(error, "obstacles[1].cylinder.height", "height:");
 }
 
@@ -246,7 +247,8 @@ TEST_F(TaskErrors, ZeroSphereRadius) {
 }
 
 TEST_F(TaskErrors, NegativeMeshScale) {
-  const auto error = errorFor(replaceOnce(kValidToyTask, "scale: [0.001, 0.002, 0.003]", "scale: [0.001, -0.002, 0.003]"));
+  const auto error =
+      errorFor(replaceOnce(kValidToyTask, "scale: [0.001, 0.002, 0.003]", "scale: [0.001, -0.002, 0.003]"));
   expectField(error, "obstacles[3].mesh.scale[1]", "mesh: {file");
 }
 
@@ -263,7 +265,8 @@ TEST_F(TaskErrors, MissingRequiredTopLevelKey) {
 }
 
 TEST_F(TaskErrors, BothJointsAndJointsDeg) {
-  const auto error = errorFor(replaceOnce(kValidToyTask, "goal:\n  joints: {", "goal:\n  joints_deg: {shoulder: 1, elbow: 1, wrist: 1}\n  joints: {"));
+  const auto error = errorFor(replaceOnce(kValidToyTask, "goal:\n  joints: {",
+                                          "goal:\n  joints_deg: {shoulder: 1, elbow: 1, wrist: 1}\n  joints: {"));
   expectField(error, "goal.joints", "  joints: {");
   EXPECT_THAT(error.message(), HasSubstr("either"));
 }
@@ -327,9 +330,7 @@ TEST_F(TaskErrors, MissingTaskFile) {
   }
 }
 
-TEST_F(TaskErrors, UnknownTaskName) {
-  EXPECT_THROW(loadTaskByName("no_such_task"), InputError);
-}
+TEST_F(TaskErrors, UnknownTaskName) { EXPECT_THROW(loadTaskByName("no_such_task"), InputError); }
 
 }  // namespace
 }  // namespace pmdplan

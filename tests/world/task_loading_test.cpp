@@ -15,7 +15,7 @@ using test::ToyTaskFolder;
 constexpr double kDegree = std::numbers::pi / 180.0;
 
 class TaskLoading : public ::testing::Test {
-protected:
+ protected:
   ToyTaskFolder folder;
   Task load(const std::string& text) { return loadTask(folder.write("task.yaml", text)); }
 };
@@ -33,7 +33,8 @@ TEST_F(TaskLoading, ReadsNameDescriptionRobotAndFile) {
 
 TEST_F(TaskLoading, ThePregraspIsOptionalAndReadLikeTheGoal) {
   EXPECT_FALSE(load(kValidToyTask).pregrasp);
-  const Task task = load(std::string(kValidToyTask) + "pregrasp:\n  joints_deg: {wrist: 10, shoulder: -20, elbow: 30}\n");
+  const Task task =
+      load(std::string(kValidToyTask) + "pregrasp:\n  joints_deg: {wrist: 10, shoulder: -20, elbow: 30}\n");
   ASSERT_TRUE(task.pregrasp);
   EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("shoulder")], -20 * kDegree, 1e-12);
   EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("wrist")], 10 * kDegree, 1e-12);
@@ -112,8 +113,8 @@ TEST_F(TaskLoading, GeneralRollPitchYawMatchesElementaryRotations) {
 
 TEST_F(TaskLoading, RelativeMeshPathIsRelativeToTheTaskFileNotTheWorkingDirectory) {
   folder.write("scenes/meshes/part.stl", test::kTetrahedronStl);
-  const auto path = folder.write("scenes/nested.yaml",
-                                 replaceOnce(kValidToyTask, "robot: toy.urdf", "robot: ../toy.urdf"));
+  const auto path =
+      folder.write("scenes/nested.yaml", replaceOnce(kValidToyTask, "robot: toy.urdf", "robot: ../toy.urdf"));
   ASSERT_NE(std::filesystem::current_path(), path.parent_path());
   const Task task = loadTask(path);
   const auto* mesh = std::get_if<MeshShape>(&task.obstacles[3].shape);
@@ -154,16 +155,15 @@ TEST_F(TaskLoading, DegreesAreConvertedToRadians) {
 TEST_F(TaskLoading, JointsInRadiansEqualJointsInDegrees) {
   const Task inDegrees = load(kValidToyTask);
   const std::string radians = "joints: {shoulder: " + std::to_string(10 * kDegree) +
-                              ", elbow: " + std::to_string(20 * kDegree) +
-                              ", wrist: " + std::to_string(-30 * kDegree) + "}";
-  const Task inRadians = load(replaceOnce(kValidToyTask,
-                                          "joints_deg:\n    shoulder: 10\n    elbow: 20\n    wrist: -30",
-                                          radians));
+                              ", elbow: " + std::to_string(20 * kDegree) + ", wrist: " + std::to_string(-30 * kDegree) +
+                              "}";
+  const Task inRadians =
+      load(replaceOnce(kValidToyTask, "joints_deg:\n    shoulder: 10\n    elbow: 20\n    wrist: -30", radians));
   EXPECT_TRUE(inRadians.start.isApprox(inDegrees.start, 1e-6));
-  const Task goalInDegrees = load(replaceOnce(
-      kValidToyTask, "joints: {wrist: 0.25, shoulder: -0.5, elbow: 1.0}",
-      "joints_deg: {wrist: " + std::to_string(0.25 / kDegree) + ", shoulder: " +
-          std::to_string(-0.5 / kDegree) + ", elbow: " + std::to_string(1.0 / kDegree) + "}"));
+  const Task goalInDegrees = load(replaceOnce(kValidToyTask, "joints: {wrist: 0.25, shoulder: -0.5, elbow: 1.0}",
+                                              "joints_deg: {wrist: " + std::to_string(0.25 / kDegree) +
+                                                  ", shoulder: " + std::to_string(-0.5 / kDegree) +
+                                                  ", elbow: " + std::to_string(1.0 / kDegree) + "}"));
   EXPECT_TRUE(goalInDegrees.goal.isApprox(inDegrees.goal, 1e-6));
 }
 

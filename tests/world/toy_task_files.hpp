@@ -2,12 +2,12 @@
 // A temporary folder holding a small three-joint robot (toy.urdf), a mesh and task files written by
 // the tests, so the task loader can be exercised without the built-in hand-arm model.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/world/task.hpp"
@@ -100,12 +100,11 @@ goal:
 
 /// A fresh folder per test with toy.urdf and meshes/part.stl; removed afterwards.
 class ToyTaskFolder {
-public:
+ public:
   ToyTaskFolder() {
     static std::atomic<int> counter{0};
     directory_ = std::filesystem::temp_directory_path() /
-                 ("pmdplan_world_test_" + std::to_string(::getpid()) + "_" +
-                  std::to_string(counter++));
+                 ("pmdplan_world_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
     std::filesystem::remove_all(directory_);
     std::filesystem::create_directories(directory_ / "meshes");
     write("toy.urdf", kToyUrdf);
@@ -127,14 +126,13 @@ public:
     return path;
   }
 
-private:
+ private:
   std::filesystem::path directory_;
 };
 
 /// `text` with the one occurrence of `from` replaced by `to`; fails the test if `from` is not
 /// there exactly once (so a mutation never silently misses).
-inline std::string replaceOnce(const std::string& text, const std::string& from,
-                               const std::string& to) {
+inline std::string replaceOnce(const std::string& text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << "'" << from << "' not in the task text";
   if (at == std::string::npos) return text;

@@ -56,7 +56,8 @@ struct BenchOptions {
 /// a repeated planner or task, runs < 1, a seed < 1 (OMPL cannot take seed 0) or one whose runs
 /// would pass the largest seed, a time limit that is not a positive finite number, a
 /// tolerance that is not positive, no task, an output (file named, field "--csv", "--markdown",
-/// "--ompl-log", "--plot") whose folder does not exist, or a report ("--report") without a journal. Tasks themselves are checked when loaded.
+/// "--ompl-log", "--plot") whose folder does not exist, or a report ("--report") without a journal. Tasks themselves
+/// are checked when loaded.
 void checkBenchOptions(const BenchOptions& options);
 
 /// Splits "a,b,c" at commas (empty items kept, so checkBenchOptions can name them).

@@ -50,8 +50,8 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options);
 /// child's wall-clock time as its planning time. With a journal, jobs it holds are not run again
 /// and every job run is added to it.
 std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
-                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress = {},
-                                       CampaignJournal* journal = nullptr);
+                                       const std::vector<std::size_t>& jobIndices,
+                                       const CampaignProgress& progress = {}, CampaignJournal* journal = nullptr);
 
 /// The records of the jobs options.journal holds, in job order, nothing run: the report of a
 /// campaign part way. Throws InputError as CampaignJournal::finishedJobs does.

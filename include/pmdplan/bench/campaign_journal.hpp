@@ -17,7 +17,7 @@
 namespace pmdplan {
 
 class CampaignJournal {
-public:
+ public:
   /// Creates the folder if needed and reads what it holds. Throws InputError (field "--journal")
   /// naming the file if one belongs to another campaign or cannot be read.
   CampaignJournal(const std::filesystem::path& folder, const BenchOptions& options, int rank);
@@ -34,9 +34,10 @@ public:
   /// The finished jobs of the journal in `folder`, read without creating or adding anything (the
   /// report of a campaign still running). Throws InputError like the constructor, and if the
   /// folder does not exist.
-  static std::map<std::size_t, RunRecord> finishedJobs(const std::filesystem::path& folder, const BenchOptions& options);
+  static std::map<std::size_t, RunRecord> finishedJobs(const std::filesystem::path& folder,
+                                                       const BenchOptions& options);
 
-private:
+ private:
   std::filesystem::path file_;
   std::string header_;
   std::map<std::size_t, RunRecord> records_;

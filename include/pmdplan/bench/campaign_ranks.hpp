@@ -9,7 +9,7 @@
 namespace pmdplan {
 
 class CampaignRanks {
-public:
+ public:
   /// Throws InputError (field "mpirun") when launched with several ranks by a build without MPI.
   CampaignRanks();
   ~CampaignRanks();
@@ -23,7 +23,7 @@ public:
   /// Every rank passes its text; rank 0 gets all of them in rank order, the others get nothing.
   std::vector<std::string> gatherToFirst(const std::string& mine) const;
 
-private:
+ private:
   int rank_ = 0;
   int size_ = 1;
   bool initialisedMpi_ = false;

@@ -18,8 +18,8 @@ namespace pmdplan {
 
 /// One correlated pair of Fig. 7 in our sign convention.
 struct CoupledJointPair {
-  int first = 0;   ///< configuration index
-  int second = 0;  ///< configuration index
+  int first = 0;      ///< configuration index
+  int second = 0;     ///< configuration index
   double sign = 1.0;  ///< +1: the joints move together (our positive-flexion signs), -1: opposite
 };
 

@@ -29,7 +29,8 @@ std::string omplBenchmarkLog(const std::vector<RunRecord>& records, const std::s
                              const std::vector<std::string>& planners, const OmplLogContext& context);
 
 /// Where a task's log goes: `path` itself for a single task, else "<stem>.<task><extension>".
-std::filesystem::path omplLogPathForTask(const std::filesystem::path& path, const std::string& task, std::size_t taskCount);
+std::filesystem::path omplLogPathForTask(const std::filesystem::path& path, const std::string& task,
+                                         std::size_t taskCount);
 
 /// The OMPL-style identifier of a planner name.
 std::string omplLogPlannerName(const std::string& planner);

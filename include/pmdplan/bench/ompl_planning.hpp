@@ -12,8 +12,8 @@
 #include "pmdplan/collision/state_validator.hpp"
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/planning_space.hpp"
-#include "pmdplan/synergy/synergy_model.hpp"
 #include "pmdplan/planning/synergy_hand_sampler.hpp"
+#include "pmdplan/synergy/synergy_model.hpp"
 
 namespace pmdplan {
 

@@ -18,11 +18,11 @@
 // Deviation: OMPL has no arm-only self-collision check, so Algorithm 1's SELFCOLLISION(c^a)
 // filter passes every arm sample here and the full check of the hand-arm sample decides alone
 // (the same paths; more full checks). motion_checks in the statistics counts checkMotion calls.
-#include <memory>
-#include <optional>
-
 #include <ompl/base/Planner.h>
 #include <ompl/util/RandomNumbers.h>
+
+#include <memory>
+#include <optional>
 
 #include "pmdplan/planning/hand_sampling_mode.hpp"
 #include "pmdplan/planning/planner_parameters.hpp"
@@ -35,7 +35,7 @@ namespace pmdplan {
 class PmdRoadmapPlanner;
 
 class OmplPmdPlanner : public ompl::base::Planner {
-public:
+ public:
   /// `synergies` is required for the Synergy mode (std::invalid_argument otherwise). Named
   /// "PMD" (Synergy) or "PMDFull" (FullSpace) unless `name` is given.
   OmplPmdPlanner(const ompl::base::SpaceInformationPtr& si, PlanningSpace space, HandSamplingMode mode,
@@ -54,7 +54,7 @@ public:
   /// Of the last run (also what getPlannerData's properties report).
   const PlanningStatistics& statistics() const { return statistics_; }
 
-private:
+ private:
   void declareParameters();
   Configuration configurationOf(const ompl::base::State* state) const;
   void setState(const Configuration& q, ompl::base::State* state) const;

@@ -3,9 +3,9 @@
 // joint box [0, 1]^n whose states are checked by our StateValidator and whose motions by our
 // MotionValidator (the checks every planner of a comparison shares). OMPL's planners, and ours
 // through OmplPmdPlanner, plan in it.
-#include <functional>
-
 #include <ompl/base/SpaceInformation.h>
+
+#include <functional>
 
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"

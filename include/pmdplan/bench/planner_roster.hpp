@@ -15,10 +15,10 @@ enum class PlannerFamily {
 };
 
 struct PlannerEntry {
-  std::string name;             ///< as on the command line: "pmd", "ompl:RRTConnect"
+  std::string name;  ///< as on the command line: "pmd", "ompl:RRTConnect"
   PlannerFamily family = PlannerFamily::PmdRoadmap;
   HandSamplingMode mode = HandSamplingMode::Synergy;  ///< PmdRoadmap only
-  std::string omplName;         ///< Ompl only: "RRTConnect" (ompl_planning.hpp makes it)
+  std::string omplName;                               ///< Ompl only: "RRTConnect" (ompl_planning.hpp makes it)
   std::string description;
   /// Ompl only: states drawn by PMD sampling (name "ompl:<Planner>@pmd").
   bool pmdSampling = false;

@@ -36,8 +36,8 @@ struct HumanLikeness {
 struct RunRecord {
   std::string task;
   std::string planner;
-  int run = 0;               ///< 0 .. runs-1
-  std::uint64_t seed = 0;    ///< S + run
+  int run = 0;             ///< 0 .. runs-1
+  std::uint64_t seed = 0;  ///< S + run
   /// The planner returned an exact solution.
   bool solved = false;
   /// The returned path passed validatePath on a separate exact checker (false when not solved).

@@ -19,7 +19,7 @@
 namespace pmdplan {
 
 class TaskBench {
-public:
+ public:
   /// `synergies` is borrowed and must outlive this object; `synergyFile` names it in errors.
   /// Throws InputError if the model's joints are not the robot's or the start or goal collides.
   TaskBench(Task task, CheckerKind checker, double toleranceMetres, const SynergyModel& synergies,
@@ -35,7 +35,7 @@ public:
   const SynergyModel& synergies() const { return synergies_; }
   const std::vector<int>& synergySlots() const { return synergySlots_; }
 
-private:
+ private:
   std::unique_ptr<Task> task_;  // first: the checkers keep references to it
   PlanningSpace space_;
   std::unique_ptr<CollisionChecking> checking_;

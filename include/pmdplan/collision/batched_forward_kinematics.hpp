@@ -16,8 +16,8 @@
 namespace pmdplan {
 
 class BatchedForwardKinematics {
-public:
-  static constexpr int kLanes = 8;       ///< configurations per batch: one AVX-512 register of doubles
+ public:
+  static constexpr int kLanes = 8;        ///< configurations per batch: one AVX-512 register of doubles
   static constexpr int kPoseValues = 12;  ///< row-major rotation (9) then translation (3)
 
   BatchedForwardKinematics(const RobotModel& model, const Eigen::Isometry3d& base = Eigen::Isometry3d::Identity());
@@ -78,7 +78,7 @@ public:
     std::vector<ValueSource> values;
   };
 
-private:
+ private:
   int dof_ = 0;
   int linkCount_ = 0;
   Plan plan_;

@@ -15,7 +15,7 @@
 namespace pmdplan {
 
 class CollisionChecking {
-public:
+ public:
   /// `task` is kept by reference: it must outlive this object.
   CollisionChecking(const Task& task, CheckerKind kind, double toleranceMetres = SegmentChecker::kDefaultTolerance);
   ~CollisionChecking();
@@ -29,7 +29,7 @@ public:
   /// The exact reference checker behind either kind (for reports; the fast kind confirms with it).
   ExactCollisionChecker& exact() { return *exact_; }
 
-private:
+ private:
   CheckerKind kind_;
   double tolerance_;
   std::unique_ptr<ExactCollisionChecker> exact_;

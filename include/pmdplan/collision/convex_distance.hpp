@@ -24,11 +24,12 @@ void segmentDistances(const double* p0, const double* p1, const double* q0, cons
 /// Exact distance from the sphere (centre c, radius r) to the part, minus r; <= 0 when they touch.
 double sphereGap(const ConvexPart& part, const double* c, double r);
 /// sphereGap of `count` spheres (centres x, y, z; radii r) into gaps[i], in one vectorised pass.
-void sphereGaps(const ConvexPart& part, const double* x, const double* y, const double* z, const double* r, int count, double* gaps);
+void sphereGaps(const ConvexPart& part, const double* x, const double* y, const double* z, const double* r, int count,
+                double* gaps);
 
 struct CoreDistance {
-  double lower = 0.0;  ///< the cores are at least this far apart
-  double upper = 0.0;  ///< and at most this far
+  double lower = 0.0;         ///< the cores are at least this far apart
+  double upper = 0.0;         ///< and at most this far
   bool intersecting = false;  ///< the cores share a point (lower = upper = 0)
 };
 

@@ -25,7 +25,7 @@ struct Clearance {
 };
 
 class ExactCollisionChecker : public StateValidator {
-public:
+ public:
   /// The robot, its base pose and the obstacles of `task` (kept by reference: outlive the checker).
   explicit ExactCollisionChecker(const Task& task);
   ~ExactCollisionChecker() override;
@@ -57,7 +57,7 @@ public:
   bool linkPairCollides(const LinkPoses& poses, int linkA, int linkB) const;
   bool linkObstacleCollides(const LinkPoses& poses, int link, std::size_t obstacle) const;
 
-private:
+ private:
   struct Geometry;
   bool selfCollides(const LinkPoses& poses, bool armOnly, CollisionReport* report) const;
   bool environmentCollides(const LinkPoses& poses, CollisionReport* report) const;

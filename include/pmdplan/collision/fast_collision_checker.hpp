@@ -27,8 +27,8 @@ namespace pmdplan {
 /// What the geometric stages alone say about one configuration (no FCL).
 struct ScreenResult {
   /// Pairs proven to overlap by more than the band (FCL agrees: they collide).
-  std::vector<std::pair<int, int>> overlappingSelf;               ///< link indices
-  std::vector<std::pair<int, std::size_t>> overlappingObstacle;   ///< (link, obstacle index)
+  std::vector<std::pair<int, int>> overlappingSelf;              ///< link indices
+  std::vector<std::pair<int, std::size_t>> overlappingObstacle;  ///< (link, obstacle index)
   /// Pairs neither proven apart nor overlapping: FCL decides them.
   std::vector<std::pair<int, int>> uncertainSelf;
   std::vector<std::pair<int, std::size_t>> uncertainObstacle;
@@ -42,15 +42,15 @@ struct ScreenResult {
 
 /// How the checks of a FastCollisionChecker were decided.
 struct FastCheckStatistics {
-  std::size_t provenFree = 0;       ///< every pair proven apart by the geometric stages
-  std::size_t provenColliding = 0;  ///< a pair proven overlapping (FCL not asked)
-  std::size_t confirmedFree = 0;    ///< uncertain pairs, all found free by FCL
+  std::size_t provenFree = 0;          ///< every pair proven apart by the geometric stages
+  std::size_t provenColliding = 0;     ///< a pair proven overlapping (FCL not asked)
+  std::size_t confirmedFree = 0;       ///< uncertain pairs, all found free by FCL
   std::size_t confirmedColliding = 0;  ///< an uncertain pair found colliding by FCL
-  std::size_t pairsConfirmed = 0;   ///< FCL pair tests run
+  std::size_t pairsConfirmed = 0;      ///< FCL pair tests run
 };
 
 class FastCollisionChecker : public StateValidator {
-public:
+ public:
   static constexpr int kLanes = BatchedForwardKinematics::kLanes;
   /// Parts closer than this (m) to touching, or interpenetrating by less, are left to FCL: far
   /// above FCL's own tolerances (about 1e-6 m) and far below anything a plan could notice.
@@ -78,7 +78,8 @@ public:
   /// with every pair staying apart. With `pairGaps` (count x pairCount() values), the gap of every
   /// pair of every valid configuration is written there too (0 for a pair only FCL could clear).
   /// Counts `count` checks.
-  void checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safe, double* pairGaps = nullptr);
+  void checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safe,
+                  double* pairGaps = nullptr);
 
   // One pair at a time, for motion checks that follow each pair along a segment (FastSegmentChecker).
   // Pairs are numbered: the self pairs with a moving link, then every moving link with geometry
@@ -92,7 +93,8 @@ public:
   /// After setMotion: 1 / (how far, in m, the pair's two sides may approach each other over the
   /// whole segment), so gap * pairShare is the fraction of the segment it stays apart for.
   double pairShare(std::size_t pair) const {
-    return pair < selfPairs_.size() ? pairShare_[pair] : linkShare_[(pair - selfPairs_.size()) % geometricLinks_.size()];
+    return pair < selfPairs_.size() ? pairShare_[pair]
+                                    : linkShare_[(pair - selfPairs_.size()) % geometricLinks_.size()];
   }
 
   /// Measures checkBatch's safe values in fractions of the straight segment from -> to, with a
@@ -108,7 +110,7 @@ public:
   const ExactCollisionChecker& exact() const { return exact_; }
   double band() const { return band_; }
 
-private:
+ private:
   /// EnclosuresOverlap: like Uncertain (FCL decides), with a mesh's enclosure overlapping the
   /// other side by more than the band, so FCL is asked about it first.
   enum class Outcome { Apart, Overlapping, Uncertain, EnclosuresOverlap };
@@ -121,7 +123,8 @@ private:
   };
 
   template <class OnFlag>
-  double screenLane(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag, double* pairGaps = nullptr);
+  double screenLane(const double* poses, int stride, int lane, bool armOnly, OnFlag&& onFlag,
+                    double* pairGaps = nullptr);
   void beginLane(const double* poses, int stride, int lane);
   void placeBound(int link);
   Outcome linkPairContact(int a, int b, double& gap);
@@ -137,8 +140,8 @@ private:
   /// FCL on the pairs in uncertain_ at q: is q free?
   bool confirmUncertain(const Configuration& q);
   /// checkBatch's geometric stages, all lanes at once (fast_batch_screen.cpp).
-  void screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid, double* safe,
-                   double* pairGaps);
+  void screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
+                   double* safe, double* pairGaps);
   // screenBatch's lane-vector stage (fast_batch_screen.cpp): fills pairLaneGaps_, laneSafe_ and
   // laneScalar_ in vectors laneWidth_ wide. `tight`: every pair's gap as tight as these tests get
   // it (the caller keeps them, as motion-check certificates), not just tight enough to prove.
@@ -157,8 +160,8 @@ private:
   std::vector<LinkParts> links_;
   std::vector<ObstaclePart> obstacles_;
   BatchedForwardKinematics kinematics_;
-  std::vector<char> moving_;     ///< per link: does any joint move it?
-  std::vector<int> boundLinks_;  ///< every link with geometry
+  std::vector<char> moving_;         ///< per link: does any joint move it?
+  std::vector<int> boundLinks_;      ///< every link with geometry
   std::vector<int> geometricLinks_;  ///< moving links with geometry, depth first
   std::vector<double> geometricBoundR_;
   /// Per geometricLinks_ entry: the entry of its nearest ancestor in the list (-1: none), and the
@@ -173,7 +176,7 @@ private:
   /// Gap multipliers for the safe value: 1 / (links that move) by default (metres), or
   /// 1 / (relative displacement over the segment) after setMotion (fractions of the segment).
   std::vector<double> pairShare_, linkShare_;
-  std::vector<double> pairWeights_, linkWeights_;  ///< metres per unit of each active joint
+  std::vector<double> pairWeights_, linkWeights_;             ///< metres per unit of each active joint
   std::vector<BatchedForwardKinematics::LinkSet> pairLinks_;  ///< per pair: the links its world poses need
   /// Per self pair: the deepest link above both, and the links below it that their poses relative
   /// to it need (the pair's distance does not depend on the joints above).
@@ -187,7 +190,7 @@ private:
   // Scratch for one lane: link bound centres; parts placed in the world on first use.
   const double* lanePoses_ = nullptr;
   int laneStride_ = 1, lane_ = 0;
-  std::vector<double> boundX_, boundY_, boundZ_;           ///< by link
+  std::vector<double> boundX_, boundY_, boundZ_;              ///< by link
   std::vector<double> geometricX_, geometricY_, geometricZ_;  ///< by geometricLinks_ entry
   std::vector<double> pairGaps_, pairDx_, pairDy_, pairDz_, obstacleGaps_;
   std::vector<int> partOffset_;
@@ -201,23 +204,23 @@ private:
   LinkPoses exactPoses_;
 
   // Scratch of screenBatch: numbers as [item][value][lane].
-  std::vector<double> boundLanes_;    ///< link bound centres
-  std::vector<double> partLanes_;     ///< the link parts placed, then the obstacles (fast_batch_screen.cpp)
-  std::vector<char> partLanesPlaced_; ///< per link
-  std::vector<double> pairLaneGaps_;  ///< per pair (pairCount()): its gap, a lower bound
-  std::vector<char> pairNear_;        ///< per pair: its bounds meet in some lane
-  std::vector<double> subtreeLanes_;  ///< per geometricLinks_ entry: its subtree's bound radius
+  std::vector<double> boundLanes_;     ///< link bound centres
+  std::vector<double> partLanes_;      ///< the link parts placed, then the obstacles (fast_batch_screen.cpp)
+  std::vector<char> partLanesPlaced_;  ///< per link
+  std::vector<double> pairLaneGaps_;   ///< per pair (pairCount()): its gap, a lower bound
+  std::vector<char> pairNear_;         ///< per pair: its bounds meet in some lane
+  std::vector<double> subtreeLanes_;   ///< per geometricLinks_ entry: its subtree's bound radius
   /// Every pair's part pairs (pair p's from pairPartsBegin_[p] to pairPartsBegin_[p + 1]); part
   /// indices into partShapes_ and partLanes_.
   std::vector<ConvexPart> partShapes_;  ///< the link parts (in their links' frames), then the obstacles
   struct PartPair {
     std::uint32_t indexA, indexB;
-    bool capsules;  ///< both capsules: their exact distance, else separating axes
+    bool capsules;              ///< both capsules: their exact distance, else separating axes
     double inverseA, inverseB;  ///< capsules: 1 / their cores' squared lengths (0: a point)
   };
   std::vector<PartPair> partPairs_;
   std::vector<std::uint32_t> pairPartsBegin_;
-  std::vector<double> partPairGaps_;  ///< per part pair: its gap, a lower bound
+  std::vector<double> partPairGaps_;                   ///< per part pair: its gap, a lower bound
   std::vector<std::uint32_t> capsuleWork_, faceWork_;  ///< the part pairs whose bounding spheres meet
   double laneSafe_[kLanes] = {};
   std::vector<std::size_t> laneScalar_[kLanes];  ///< per lane: the pairs it tests alone

@@ -23,7 +23,7 @@
 namespace pmdplan {
 
 class FastSegmentChecker : public MotionValidator {
-public:
+ public:
   /// Bisection states of the coarse pass (at most; state 1 comes on top): the first four levels.
   static constexpr long kCoarseStates = 15;
 
@@ -37,7 +37,7 @@ public:
   double tolerance() const { return tolerance_; }
   const SweptDistanceBound& bound() const { return bound_; }
 
-private:
+ private:
   /// States within a certificate of a gap found at one state: every state less than
   /// gap * share * n states away (a relative allowance for the rounding of interpolated states).
   static long reach(double gap, double share, long n);
@@ -48,12 +48,12 @@ private:
   std::size_t statesChecked_ = 0;
   std::size_t statesSkipped_ = 0;
   std::vector<long> order_;
-  std::vector<double> coarseGaps_;  ///< per coarse state, per pair
+  std::vector<double> coarseGaps_;              ///< per coarse state, per pair
   std::vector<int> bucketHead_, nextInBucket_;  ///< pairs by the state they must be tested at
   std::vector<std::size_t> testing_;
   Configuration state_, batch_[FastCollisionChecker::kLanes];
   std::vector<std::pair<std::size_t, long>> covered_;  ///< (pair, last state a coarse state covers)
-  std::vector<std::pair<long, long>> byPosition_;  ///< coarse states: (state, coarse index), sorted
+  std::vector<std::pair<long, long>> byPosition_;      ///< coarse states: (state, coarse index), sorted
 };
 
 /// Interior indices 1 .. intervals-1 in SegmentChecker's breadth-first bisection order (the

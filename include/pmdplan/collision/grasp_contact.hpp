@@ -14,7 +14,7 @@
 namespace pmdplan {
 
 class GraspContactRule {
-public:
+ public:
   /// Throws InputError naming the task file and `target` when the task has no target, and the
   /// robot's URDF and `end_effector` when the robot names no palm link.
   explicit GraspContactRule(const Task& task);
@@ -26,7 +26,7 @@ public:
   /// The pairs of `report` the rule does not allow (still sorted).
   CollisionReport forbidden(const CollisionReport& report) const;
 
-private:
+ private:
   std::string target_;
   std::set<std::string> handLinks_;
 };

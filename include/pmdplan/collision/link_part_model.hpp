@@ -26,8 +26,8 @@ struct LinkParts {
 std::vector<LinkParts> linkParts(const RobotModel& model);
 
 struct ObstaclePart {
-  ConvexPart part;     ///< in the world
-  bool exact = true;   ///< false: a mesh's enclosure (the mesh lies inside it)
+  ConvexPart part;    ///< in the world
+  bool exact = true;  ///< false: a mesh's enclosure (the mesh lies inside it)
 };
 
 /// Throws InputError naming the mesh file if a mesh cannot be read.

@@ -8,7 +8,7 @@
 namespace pmdplan {
 
 class MotionValidator {
-public:
+ public:
   virtual ~MotionValidator() = default;
   virtual bool isValid(const Configuration& from, const Configuration& to) = 0;
   /// States checked by all isValid calls so far.

@@ -30,8 +30,8 @@ struct ClosingPhase {
 
 /// Before `closing->from` (or everywhere without it) every pair counts.
 PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker& segments,
-                            const std::vector<Configuration>& path, const Configuration& start, const Configuration& goal,
-                            std::optional<ClosingPhase> closing = {});
+                            const std::vector<Configuration>& path, const Configuration& start,
+                            const Configuration& goal, std::optional<ClosingPhase> closing = {});
 
 /// validatePath against a task: a path whose closing phase starts at point `closingFrom` (the path
 /// file's phases) is checked with the rule of the task's target; a task without a target makes

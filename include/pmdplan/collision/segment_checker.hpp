@@ -16,13 +16,13 @@ namespace pmdplan {
 struct SegmentInspection {
   bool free = true;
   std::optional<double> firstCollision;  ///< smallest colliding fraction in [0, 1]
-  CollisionReport collisions;           ///< pairs at the first colliding state
+  CollisionReport collisions;            ///< pairs at the first colliding state
   long statesChecked = 0;
   long statesNeeded = 0;  ///< intervals + 1: what the tolerance requires, endpoints included
 };
 
 class SegmentChecker : public MotionValidator {
-public:
+ public:
   static constexpr double kDefaultTolerance = 0.001;  ///< metres
 
   SegmentChecker(StateValidator& states, const RobotModel& model, double tolerance = kDefaultTolerance);
@@ -38,10 +38,10 @@ public:
   /// the first collision and reporting its pairs (for `pmdplan check` and `pmdplan validate`).
   SegmentInspection inspect(ExactCollisionChecker& checker, const Configuration& from, const Configuration& to) const;
   /// The same with another state check: `check(q)` reports the pairs that count at q.
-  SegmentInspection inspect(const std::function<CollisionReport(const Configuration&)>& check, const Configuration& from,
-                            const Configuration& to) const;
+  SegmentInspection inspect(const std::function<CollisionReport(const Configuration&)>& check,
+                            const Configuration& from, const Configuration& to) const;
 
-private:
+ private:
   StateValidator& states_;
   SweptDistanceBound bound_;
   double tolerance_;

@@ -34,7 +34,8 @@ bool onDifferentBranches(const RobotModel& model, int linkA, int linkB);
 
 /// The SRDF-style companion text: the model's groups plus the given disabled pairs. Well-formed
 /// XML: `generatedBy` goes into a comment with every "--" spaced apart.
-std::string companionFileText(const RobotModel& model, const std::vector<SkippablePair>& pairs, const std::string& generatedBy);
+std::string companionFileText(const RobotModel& model, const std::vector<SkippablePair>& pairs,
+                              const std::string& generatedBy);
 /// The same from groups given by name; `palmLink` empty for no end effector.
 std::string companionFileText(const std::string& robotName, const std::vector<RobotModel::GroupDefinition>& groups,
                               const std::string& palmLink, const std::vector<SkippablePair>& pairs,

@@ -8,7 +8,7 @@
 namespace pmdplan {
 
 class StateValidator {
-public:
+ public:
   virtual ~StateValidator() = default;
   /// Free of self-collision (enabled pairs) and of collision with the environment.
   virtual bool isValid(const Configuration& q) = 0;

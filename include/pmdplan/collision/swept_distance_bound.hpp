@@ -23,7 +23,7 @@ inline constexpr long kMaxSegmentIntervals = 10'000'000;
 void checkMotionToleranceMm(double mm);
 
 class SweptDistanceBound {
-public:
+ public:
   explicit SweptDistanceBound(const RobotModel& model);
 
   /// Metres moved per unit of each active joint (radian or metre), mimic joints included.
@@ -34,7 +34,7 @@ public:
   /// between consecutive states (at least 1); more than kMaxSegmentIntervals is an InputError.
   long intervals(const Configuration& from, const Configuration& to, double tolerance) const;
 
-private:
+ private:
   std::vector<double> leverArms_;
 };
 

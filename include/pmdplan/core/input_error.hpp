@@ -6,7 +6,7 @@
 namespace pmdplan {
 
 class InputError : public std::runtime_error {
-public:
+ public:
   /// `file` may be empty for input that has no file (command-line values); `field` names the key,
   /// column or "line N" where the problem is; `message` says what was wrong and what is expected.
   InputError(std::string file, std::string field, std::string message);
@@ -15,7 +15,7 @@ public:
   const std::string& field() const { return field_; }
   const std::string& message() const { return message_; }
 
-private:
+ private:
   std::string file_;
   std::string field_;
   std::string message_;

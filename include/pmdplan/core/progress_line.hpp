@@ -6,7 +6,7 @@
 namespace pmdplan {
 
 class ProgressLine {
-public:
+ public:
   explicit ProgressLine(std::string label);
   ~ProgressLine();
   /// Redraws at most every 100 ms; `done` of `total` (total 0 = unknown) plus a short status.
@@ -14,7 +14,7 @@ public:
   void finish();
   bool enabled() const { return enabled_; }
 
-private:
+ private:
   std::string label_;
   bool enabled_;
   bool drawn_ = false;

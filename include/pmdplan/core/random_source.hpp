@@ -1,14 +1,14 @@
 #pragma once
-// One seeded source of randomness per run (planner, synthetic glove, pair sampling). std::mt19937_64's output sequence is fixed by the
-// standard, but std:: distributions are not, so the uniform numbers are made here from raw bits:
-// the same seed gives the same numbers on every platform and standard library.
+// One seeded source of randomness per run (planner, synthetic glove, pair sampling). std::mt19937_64's output sequence
+// is fixed by the standard, but std:: distributions are not, so the uniform numbers are made here from raw bits: the
+// same seed gives the same numbers on every platform and standard library.
 #include <cstdint>
 #include <random>
 
 namespace pmdplan {
 
 class RandomSource {
-public:
+ public:
   explicit RandomSource(std::uint64_t seed = 1) : engine_(seed) {}
 
   void reseed(std::uint64_t seed) { engine_.seed(seed); }
@@ -19,7 +19,7 @@ public:
   /// Uniform in [low, high).
   double uniform(double low, double high) { return low + (high - low) * uniform01(); }
 
-private:
+ private:
   std::mt19937_64 engine_;
 };
 

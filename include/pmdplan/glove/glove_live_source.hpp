@@ -32,7 +32,7 @@ struct GloveDeviceSettings {
 };
 
 class GloveLiveSource {
-public:
+ public:
   virtual ~GloveLiveSource() = default;
   /// Waits for the next frame; returns Interrupted as soon as `stopRequested` says so (checked at
   /// least every 50 ms), Finished at the end of a recording. Throws InputError naming the device

@@ -13,7 +13,7 @@
 namespace pmdplan {
 
 class GloveReplyScanner {
-public:
+ public:
   /// Appends bytes read from the device.
   void feed(std::string_view bytes);
   /// The next complete, valid reply in what was fed, or nullopt until more bytes arrive. Bytes
@@ -26,7 +26,7 @@ public:
   /// Offset in the stream of the first byte not yet consumed (for messages).
   long long offset() const { return consumed_; }
 
-private:
+ private:
   void drop(std::size_t count);
 
   std::string buffer_;

@@ -13,7 +13,7 @@ bool isSupportedBaudRate(int baud);
 std::string supportedBaudRates();
 
 class GloveSerialDevice {
-public:
+ public:
   /// Opens and configures `path`. Throws InputError (file `path`, field "--device" or "--baud")
   /// when it cannot be opened, is not a terminal (a plain file: replay it with --replay), or the
   /// rate is not one termios supports.
@@ -33,7 +33,7 @@ public:
 
   const std::string& path() const { return path_; }
 
-private:
+ private:
   std::string path_;
   int fd_ = -1;
 };

@@ -15,16 +15,15 @@ YAML::Node parseDocument(std::string_view text, const std::string& file);
 std::string lineOf(const YAML::Node& node);
 
 /// The map entry `key` of `map`; throws InputError (line of `map`) if it is missing.
-YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& file,
-                    const std::string& context);
+YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& file, const std::string& context);
 
 /// Throws unless `node` is a map / a sequence.
 void expectMap(const YAML::Node& node, const std::string& file, const std::string& context);
 void expectSequence(const YAML::Node& node, const std::string& file, const std::string& context);
 
 /// Throws InputError naming the line and the key of the first key not in `known`.
-void rejectUnknownKeys(const YAML::Node& map, std::initializer_list<std::string_view> known,
-                       const std::string& file, const std::string& context);
+void rejectUnknownKeys(const YAML::Node& map, std::initializer_list<std::string_view> known, const std::string& file,
+                       const std::string& context);
 
 double number(const YAML::Node& node, const std::string& file, const std::string& context);
 std::string text(const YAML::Node& node, const std::string& file, const std::string& context);

@@ -14,7 +14,7 @@
 namespace pmdplan {
 
 class EventStreamServer {
-public:
+ public:
   /// Binds 127.0.0.1:`port` (0: any free port) and starts accepting. Throws InputError (field
   /// "--serve") if the port is out of range or cannot be bound.
   EventStreamServer(std::filesystem::path root, int port);
@@ -30,7 +30,7 @@ public:
   /// Pages subscribed now.
   int subscribers();
 
-private:
+ private:
   void acceptLoop();
   void answer(int connection);
 

@@ -13,7 +13,7 @@
 namespace pmdplan {
 
 class LiveCsvFile {
-public:
+ public:
   /// Checks `target` like any output (checkOutputPath, field `option`; `inputs` may not be it),
   /// opens the partial file and writes the '#' note lines and the header.
   LiveCsvFile(std::filesystem::path target, const std::string& option, const std::vector<std::string>& notes,
@@ -34,7 +34,7 @@ public:
   const std::filesystem::path& target() const { return target_; }
   const std::filesystem::path& partial() const { return partial_; }
 
-private:
+ private:
   std::filesystem::path target_;
   std::filesystem::path partial_;
   std::FILE* file_ = nullptr;

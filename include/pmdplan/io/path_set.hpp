@@ -4,9 +4,9 @@
 // folder's path files, and the viewer document's overlay paths.
 //
 // A bench folder (`pmdplan bench --paths DIR`) holds one path file per solved run, named
-// TASK.PLANNER.seedN.path.json (benchPathFileName: ompl:RRTConnect as ompl-RRTConnect). The viewer shows a seed's files with pmd
-// first, then full, then the other planners by name: the first path is the one whose synergy
-// readout, joint plots and collision colours the page shows.
+// TASK.PLANNER.seedN.path.json (benchPathFileName: ompl:RRTConnect as ompl-RRTConnect). The viewer shows a seed's files
+// with pmd first, then full, then the other planners by name: the first path is the one whose synergy readout, joint
+// plots and collision colours the page shows.
 #include <cstdint>
 #include <filesystem>
 #include <optional>

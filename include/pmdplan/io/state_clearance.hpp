@@ -12,8 +12,8 @@
 namespace pmdplan {
 
 struct StateClearance {
-  double clearance = 0.0;                    ///< metres; 0 or less in contact
-  std::vector<std::string> collidingLinks;   ///< robot links in a colliding pair, each once
+  double clearance = 0.0;                   ///< metres; 0 or less in contact
+  std::vector<std::string> collidingLinks;  ///< robot links in a colliding pair, each once
 };
 
 std::vector<StateClearance> stateClearances(const Task& task, const std::vector<Configuration>& states);

@@ -19,7 +19,7 @@ std::string requestTarget(const std::string& request);
 std::string staticFileResponse(const std::filesystem::path& root, const std::string& request);
 
 class StaticFileServer {
-public:
+ public:
   /// Binds 127.0.0.1:`port` (0: a free port the system picks). Throws InputError (field
   /// "--serve") if the port is out of range or cannot be bound.
   StaticFileServer(std::filesystem::path root, int port);
@@ -33,7 +33,7 @@ public:
   /// Accepts and answers one request (used by tests).
   void serveOne();
 
-private:
+ private:
   std::filesystem::path root_;
   int socket_ = -1;
   int port_ = 0;

@@ -16,6 +16,7 @@ std::string escaped(const std::string& text);
 /// <text> at (x, y) with extra attributes.
 std::string text(double x, double y, const std::string& content, const std::string& attributes = "");
 /// <line> from (x1, y1) to (x2, y2) with extra attributes.
-std::string line(double x1, double y1, double x2, double y2, const std::string& stroke, const std::string& attributes = "");
+std::string line(double x1, double y1, double x2, double y2, const std::string& stroke,
+                 const std::string& attributes = "");
 
 }  // namespace pmdplan::svg

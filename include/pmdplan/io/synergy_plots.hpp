@@ -27,7 +27,8 @@ std::string cumulativeVarianceSvg(const SynergyModel& model);
 /// values in degrees over the joints' limits, each with its correlation r (also in the paper's
 /// sign convention) and the paper's finding. `postures`: one row per frame, one column per joint
 /// (rad). Throws std::invalid_argument if the sizes disagree.
-std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyPlotOptions& options = {});
+std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& joints,
+                          const SynergyPlotOptions& options = {});
 
 /// Writes cumulative_variance.svg and (if `postures` has rows) joint_pairs.svg into `directory`
 /// (created if missing) and returns the files written.

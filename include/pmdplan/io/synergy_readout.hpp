@@ -28,6 +28,7 @@ std::vector<int> modelJointSlots(const SynergyModel& model, const RobotModel& ro
 
 /// The readout of the hand posture inside `configuration`; `slots` from modelJointSlots(). Joint
 /// values are normalised by the model's limits (the model's own units).
-SynergyReadout synergyReadout(const SynergyModel& model, const std::vector<int>& slots, const Configuration& configuration);
+SynergyReadout synergyReadout(const SynergyModel& model, const std::vector<int>& slots,
+                              const Configuration& configuration);
 
 }  // namespace pmdplan

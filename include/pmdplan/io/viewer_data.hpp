@@ -90,7 +90,7 @@ ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesys
 /// Checks that the path and the synergy model fit the task's robot (InputError naming the path
 /// file or the model file otherwise, see pathConfigurations() and modelJointSlots()) and builds
 /// the document. `synergies` may be null (a robot without a model: no synergy panel).
-ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies, const ViewerSources& sources,
-                      const ViewerDataParameters& parameters = {});
+ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies,
+                      const ViewerSources& sources, const ViewerDataParameters& parameters = {});
 
 }  // namespace pmdplan

@@ -21,7 +21,7 @@ struct SphereShape {
 struct TriangleMesh;  // mesh_file.hpp
 
 struct MeshShape {
-  std::filesystem::path file;                     ///< absolute, or as resolved by the loader
+  std::filesystem::path file;  ///< absolute, or as resolved by the loader
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
   /// Its triangles, scaled (loadMeshShape); null until read.
   std::shared_ptr<const TriangleMesh> triangles;

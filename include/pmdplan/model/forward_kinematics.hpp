@@ -11,7 +11,7 @@ namespace pmdplan {
 using LinkPoses = std::vector<Eigen::Isometry3d, Eigen::aligned_allocator<Eigen::Isometry3d>>;
 
 class ForwardKinematics {
-public:
+ public:
   ForwardKinematics(const RobotModel& model, const Eigen::Isometry3d& base = Eigen::Isometry3d::Identity());
 
   /// Values of every joint (mimic joints derived), indexed like RobotModel::joints().
@@ -23,7 +23,7 @@ public:
   const RobotModel& model() const { return model_; }
   const Eigen::Isometry3d& base() const { return base_; }
 
-private:
+ private:
   const RobotModel& model_;
   Eigen::Isometry3d base_;
 };

@@ -22,12 +22,12 @@ struct Joint {
   int parentLink = -1;
   int childLink = -1;
   Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  ///< parent link frame -> joint frame
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();          ///< unit axis in the joint frame
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();           ///< unit axis in the joint frame
   double lower = 0.0;
   double upper = 0.0;
-  double velocity = 0.0;         ///< URDF <limit velocity> (rad/s or m/s); 0 when not given
-  int activeIndex = -1;          ///< position in a Configuration; -1 for fixed and mimic joints
-  int mimicSource = -1;          ///< index into joints(); value = multiplier * source + offset
+  double velocity = 0.0;  ///< URDF <limit velocity> (rad/s or m/s); 0 when not given
+  int activeIndex = -1;   ///< position in a Configuration; -1 for fixed and mimic joints
+  int mimicSource = -1;   ///< index into joints(); value = multiplier * source + offset
   double mimicMultiplier = 1.0;
   double mimicOffset = 0.0;
 };
@@ -42,13 +42,13 @@ struct VisualMesh {
 
 struct Link {
   std::string name;
-  int parentJoint = -1;                     ///< -1 for the root link
+  int parentJoint = -1;                      ///< -1 for the root link
   std::vector<PlacedShape> collisionShapes;  ///< poses in the link frame
   std::vector<VisualMesh> visualMeshes;
 };
 
 class RobotModel {
-public:
+ public:
   /// Loads a URDF and, if given, its SRDF-style companion (groups, disabled collision pairs).
   /// Throws InputError naming the file and the element on malformed input (unknown mimic source,
   /// mimic cycle, missing limits, unsupported geometry, …).
@@ -73,8 +73,8 @@ public:
   std::vector<std::string> activeJointNames() const;
   /// Index of an active joint in a configuration, or -1.
   int activeIndex(const std::string& jointName) const;
-  int linkIndex(const std::string& linkName) const;   ///< -1 if absent
-  int jointIndex(const std::string& jointName) const; ///< -1 if absent
+  int linkIndex(const std::string& linkName) const;    ///< -1 if absent
+  int jointIndex(const std::string& jointName) const;  ///< -1 if absent
 
   /// Planning groups from the companion file ("arm", "hand"): active-configuration indices.
   const std::vector<int>& group(const std::string& groupName) const;
@@ -104,7 +104,7 @@ public:
   Configuration normalise(const Configuration& q) const;
   Configuration denormalise(const Configuration& unit) const;
 
-private:
+ private:
   std::string name_;
   std::filesystem::path urdfPath_;
   std::vector<Link> links_;

@@ -6,14 +6,14 @@
 
 #include "pmdplan/collision/state_validator.hpp"
 #include "pmdplan/core/joint_limit.hpp"
+#include "pmdplan/core/random_source.hpp"
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/planning_space.hpp"
-#include "pmdplan/core/random_source.hpp"
 
 namespace pmdplan {
 
 class ArmSegmentSampler {
-public:
+ public:
   /// `start` and `goal` are full configurations within the space's limits.
   ArmSegmentSampler(const PlanningSpace& space, const Configuration& start, const Configuration& goal);
 
@@ -30,10 +30,10 @@ public:
 
   /// Algorithm 1: up to `maxTrials` draws until one is free of arm self-collision
   /// (StateValidator::isArmValid). False if none was; `q` then holds the last draw.
-  bool sample(double step, double halfSize, RandomSource& random, StateValidator& validator,
-              Configuration& q, int maxTrials = 1) const;
+  bool sample(double step, double halfSize, RandomSource& random, StateValidator& validator, Configuration& q,
+              int maxTrials = 1) const;
 
-private:
+ private:
   std::vector<int> armIndices_;
   JointLimits armLimits_;
   Eigen::VectorXd startUnit_;  ///< normalised arm entries of c_ini, in armIndices order

@@ -7,7 +7,7 @@
 namespace pmdplan {
 
 class DisjointSets {
-public:
+ public:
   /// Adds a new singleton set and returns its element.
   std::size_t add();
   /// The representative of x's set. Mutates (path halving) but not observably.
@@ -19,7 +19,7 @@ public:
   std::size_t setCount() const { return setCount_; }
   void clear();
 
-private:
+ private:
   mutable std::vector<std::size_t> parent_;
   std::vector<std::size_t> setSize_;
   std::size_t setCount_ = 0;

@@ -10,7 +10,7 @@
 namespace pmdplan {
 
 class FullSpaceHandSampler final : public HandSampler {
-public:
+ public:
   explicit FullSpaceHandSampler(const PlanningSpace& space);
 
   int initialDimension() const override { return static_cast<int>(handIndices_.size()); }
@@ -18,7 +18,7 @@ public:
   void sample(int dimension, RandomSource& random, Configuration& q) const override;
   std::string name() const override { return "full"; }
 
-private:
+ private:
   std::vector<int> handIndices_;
   JointLimits handLimits_;
 };

@@ -3,13 +3,13 @@
 // full-space baseline differ only in the HandSampler they use.
 #include <string>
 
-#include "pmdplan/model/configuration.hpp"
 #include "pmdplan/core/random_source.hpp"
+#include "pmdplan/model/configuration.hpp"
 
 namespace pmdplan {
 
 class HandSampler {
-public:
+ public:
   virtual ~HandSampler() = default;
   /// Active dimension Algorithm 4 starts every arm configuration with (dimSch = 2 for the paper).
   virtual int initialDimension() const = 0;

@@ -15,8 +15,8 @@ namespace pmdplan {
 /// than `path`. Edges are checked lazily: the shortest path over edges not yet known to collide is
 /// checked, colliding edges are dropped and the search repeated. That returns the same length as
 /// checking all n(n-1)/2 edges first, with far fewer motion checks.
-std::vector<std::size_t> shortcutPathIndices(const std::vector<Configuration>& path,
-                                             const PlanningSpace& space, MotionValidator& motionValidator);
+std::vector<std::size_t> shortcutPathIndices(const std::vector<Configuration>& path, const PlanningSpace& space,
+                                             MotionValidator& motionValidator);
 
 /// The path made of those nodes.
 std::vector<Configuration> smoothPath(const std::vector<Configuration>& path, const PlanningSpace& space,

@@ -11,9 +11,9 @@
 namespace pmdplan {
 
 struct PlannerSetting {
-  std::string flag;    ///< without the dashes: "rho-a"
-  std::string symbol;  ///< the paper's name: "rho_a", "K", "n_A", or "" where the paper has none
-  std::string help;    ///< one line: what it is and its unit
+  std::string flag;       ///< without the dashes: "rho-a"
+  std::string symbol;     ///< the paper's name: "rho_a", "K", "n_A", or "" where the paper has none
+  std::string help;       ///< one line: what it is and its unit
   std::string valueName;  ///< what the value looks like in the help: "NUMBER", "COUNT", "on|off", ...
   /// Parses the whole text strictly into the field; throws InputError (no file, field "--flag")
   /// for text that is not a value of the field's type (range checks: PlannerParameters::check).

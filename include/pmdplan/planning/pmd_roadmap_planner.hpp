@@ -12,13 +12,13 @@
 
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"
+#include "pmdplan/core/random_source.hpp"
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
 #include "pmdplan/planning/planner_parameters.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
-#include "pmdplan/core/random_source.hpp"
 #include "pmdplan/planning/roadmap.hpp"
 #include "pmdplan/planning/search_range.hpp"
 
@@ -26,12 +26,12 @@ namespace pmdplan {
 
 /// A snapshot for a progress display, given before each hypercube is sampled.
 struct PlannerProgress {
-  std::size_t sweep = 0;         ///< k of Algorithm 4
-  double armHalfSize = 0.0;      ///< rho_a of this sweep
-  std::size_t hypercube = 0;     ///< index i in the Van der Corput order, 0 .. hypercubes-1
-  std::size_t hypercubes = 0;    ///< STEPS + 1
+  std::size_t sweep = 0;       ///< k of Algorithm 4
+  double armHalfSize = 0.0;    ///< rho_a of this sweep
+  std::size_t hypercube = 0;   ///< index i in the Van der Corput order, 0 .. hypercubes-1
+  std::size_t hypercubes = 0;  ///< STEPS + 1
   SearchRange searchRange;
-  std::size_t samples = 0;       ///< hand-arm draws so far
+  std::size_t samples = 0;  ///< hand-arm draws so far
   std::size_t roadmapNodes = 0;
   std::size_t components = 0;
   double elapsedSeconds = 0.0;
@@ -40,7 +40,7 @@ struct PlannerProgress {
 using ProgressCallback = std::function<void(const PlannerProgress&)>;
 
 class PmdRoadmapPlanner {
-public:
+ public:
   /// The validators are borrowed and must outlive the planner.
   PmdRoadmapPlanner(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
                     std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters = {});
@@ -70,7 +70,7 @@ public:
   const PlannerParameters& parameters() const { return parameters_; }
   const HandSampler& handSampler() const { return *handSampler_; }
 
-private:
+ private:
   using Clock = std::chrono::steady_clock;
 
   /// What sampling one hypercube gave: a new node, nothing, or a reason to stop.

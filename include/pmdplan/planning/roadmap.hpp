@@ -29,7 +29,7 @@ struct RoadmapEdge {
 };
 
 class Roadmap {
-public:
+ public:
   NodeIndex addNode(RoadmapNode node);
   /// Joins two nodes (undirected); the length is their normalised distance.
   void addEdge(NodeIndex a, NodeIndex b);
@@ -52,7 +52,7 @@ public:
 
   void clear();
 
-private:
+ private:
   std::vector<RoadmapNode> nodes_;
   std::vector<double> units_;  ///< the nodes' `unit` side by side, for scans over all of them
   std::size_t dimension_ = 0;

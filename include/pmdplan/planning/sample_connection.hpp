@@ -13,8 +13,7 @@ namespace pmdplan {
 /// FINDNEIGHBORS: up to `count` (K) nodes nearest to `node` in normalised joint space, at most
 /// `threshold` away, nearest first; equal distances are ordered by node index so the result never
 /// depends on anything but the roadmap. Brute force: the roadmaps stay small.
-std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, std::size_t count,
-                                      double threshold);
+std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, std::size_t count, double threshold);
 
 struct ConnectionRule {
   std::size_t neighbourCount = 10;  ///< K

@@ -20,12 +20,11 @@ struct SynergySamplingParameters {
 };
 
 class SynergyHandSampler final : public HandSampler {
-public:
+ public:
   /// Throws InputError (no file; field "joints", "mean", "directions", "sigma", "own_axis_joints",
   /// "kappa" or "max_directions") if the model does not cover exactly the space's hand joints, its
   /// sizes disagree, or a parameter is out of range. The caller may re-throw naming the model file.
-  SynergyHandSampler(const PlanningSpace& space, const SynergyModel& model,
-                     SynergySamplingParameters parameters = {});
+  SynergyHandSampler(const PlanningSpace& space, const SynergyModel& model, SynergySamplingParameters parameters = {});
 
   /// Own-axis joints + 1 PMD: 2 for the SAH.
   int initialDimension() const override { return ownAxisCount() + 1; }
@@ -37,14 +36,14 @@ public:
   /// PMDs in use (model's count capped by maxDirections).
   int directionCount() const { return static_cast<int>(halfWidths_.size()); }
 
-private:
-  std::vector<int> configIndex_;     ///< per model joint: its configuration index
-  JointLimits modelLimits_;          ///< the limits the model normalises with
-  JointLimits robotLimits_;          ///< the space's limits of the same joints (final clamp)
-  Eigen::VectorXd mean_;             ///< b
-  Eigen::MatrixXd directions_;       ///< E' without the own axes: the PMDs in use
-  Eigen::VectorXd halfWidths_;       ///< lambda_i
-  std::vector<int> ownAxisSlots_;    ///< model joint slots sampled over their whole range
+ private:
+  std::vector<int> configIndex_;   ///< per model joint: its configuration index
+  JointLimits modelLimits_;        ///< the limits the model normalises with
+  JointLimits robotLimits_;        ///< the space's limits of the same joints (final clamp)
+  Eigen::VectorXd mean_;           ///< b
+  Eigen::MatrixXd directions_;     ///< E' without the own axes: the PMDs in use
+  Eigen::VectorXd halfWidths_;     ///< lambda_i
+  std::vector<int> ownAxisSlots_;  ///< model joint slots sampled over their whole range
 };
 
 }  // namespace pmdplan

@@ -18,15 +18,15 @@ struct TaskPlanningOptions {
   HandSamplingMode mode = HandSamplingMode::Synergy;
   PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   const SynergyModel* synergies = nullptr;  ///< required for the Synergy mode
-  GraspSettings grasp;                       ///< how a pre-grasp is derived for a grasp goal
+  GraspSettings grasp;                      ///< how a pre-grasp is derived for a grasp goal
 };
 
 struct TaskPlanningResult {
   PlannerStatus status = PlannerStatus::NotRun;
   std::vector<Configuration> path;
   PlanningStatistics statistics;
-  std::optional<GraspApproach> grasp;       ///< set when the goal grasps the target
-  std::optional<std::size_t> closingFrom;   ///< the pre-grasp's index in `path` (closing phase from there)
+  std::optional<GraspApproach> grasp;      ///< set when the goal grasps the target
+  std::optional<std::size_t> closingFrom;  ///< the pre-grasp's index in `path` (closing phase from there)
 };
 
 /// `checking` must have been built for `task`; its tolerance is the motion checks' resolution.

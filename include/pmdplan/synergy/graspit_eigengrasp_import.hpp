@@ -27,10 +27,8 @@ struct GraspItImport {
 /// Throws InputError naming the file and line of malformed XML, a dimension count that differs from
 /// the joint list, unknown joints, an origin beyond a joint limit and a rank-deficient basis.
 GraspItImport importGraspItEigengrasps(const std::filesystem::path& path,
-                                       const std::vector<std::string>& dimensionJoints,
-                                       const JointLimits& handJoints);
+                                       const std::vector<std::string>& dimensionJoints, const JointLimits& handJoints);
 GraspItImport parseGraspItEigengrasps(std::string_view xml, const std::string& sourceName,
-                                      const std::vector<std::string>& dimensionJoints,
-                                      const JointLimits& handJoints);
+                                      const std::vector<std::string>& dimensionJoints, const JointLimits& handJoints);
 
 }  // namespace pmdplan

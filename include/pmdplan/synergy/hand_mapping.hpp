@@ -39,9 +39,9 @@ struct MappedPostures {
   std::vector<long long> clampedPerJoint;
 };
 
-/// The rule for each of `handJoints`, in that order (pointers into `mapping`). Throws InputError naming the mapping file and
-/// line for a rule about a joint the robot does not have, a joint without a rule or with two, and a
-/// constant outside the joint's limits.
+/// The rule for each of `handJoints`, in that order (pointers into `mapping`). Throws InputError naming the mapping
+/// file and line for a rule about a joint the robot does not have, a joint without a rule or with two, and a constant
+/// outside the joint's limits.
 std::vector<const JointRule*> rulesForJoints(const HandMapping& mapping, const JointLimits& handJoints);
 
 /// Maps calibrated sensor angles (one row per frame, 22 columns, rad) to the robot hand joints.

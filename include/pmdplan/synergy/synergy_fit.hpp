@@ -21,9 +21,9 @@ struct SynergyFitOptions {
 
 /// Where the postures came from, for messages and for the model's provenance.
 struct PostureSource {
-  std::string file;          ///< recording file (messages)
-  std::string location;      ///< where the frames are in it, e.g. "lines 3-13502" (messages)
-  std::string provenance;    ///< copied into the model
+  std::string file;        ///< recording file (messages)
+  std::string location;    ///< where the frames are in it, e.g. "lines 3-13502" (messages)
+  std::string provenance;  ///< copied into the model
 };
 
 struct SynergyFit {
@@ -41,7 +41,7 @@ struct SynergyFit {
 /// `postures`: one row per frame, one column per joint of `joints` (rad). Throws InputError naming
 /// the source for an own-axis joint the robot lacks, fewer frames than PCA joints + 1, a posture
 /// outside the limits, and data in which every PCA joint is constant.
-SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints,
-                           const SynergyFitOptions& options, const PostureSource& source);
+SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitOptions& options,
+                           const PostureSource& source);
 
 }  // namespace pmdplan

@@ -19,10 +19,10 @@ namespace pmdplan {
 inline constexpr int kMaxSyntheticFrames = 1000000;
 
 struct SyntheticOperatorParameters {
-  int frames = 13500;              ///< the paper's data set size; 1..kMaxSyntheticFrames
+  int frames = 13500;  ///< the paper's data set size; 1..kMaxSyntheticFrames
   std::uint64_t seed = 1;
-  double sampleRateHz = 100.0;     ///< CyberGlove rate (docs/reference_data.md §3)
-  double timeConstantS = 0.8;      ///< correlation time of the smooth random motion (docs/reference_data.md §4)
+  double sampleRateHz = 100.0;  ///< CyberGlove rate (docs/reference_data.md §3)
+  double timeConstantS = 0.8;   ///< correlation time of the smooth random motion (docs/reference_data.md §4)
   /// Total variance of the latent postures, normalised units squared (docs/reference_data.md §4: 0.30-0.35).
   double totalVariance = 0.32;
   /// Share of the time a motion primitive (open/close, spread, opposition, pinch) is under way.
@@ -30,8 +30,8 @@ struct SyntheticOperatorParameters {
 };
 
 struct SyntheticGloveSession {
-  GloveRecording recording;     ///< raw frames (1-255) with times and a notice that they are synthetic
-  GloveCalibration calibration; ///< the synthetic glove's calibration, described as synthetic
+  GloveRecording recording;      ///< raw frames (1-255) with times and a notice that they are synthetic
+  GloveCalibration calibration;  ///< the synthetic glove's calibration, described as synthetic
 };
 
 /// The target variance fractions of the latent directions (docs/reference_data.md §4), largest first.
@@ -40,7 +40,7 @@ const std::vector<double>& syntheticOperatorVarianceFractions();
 /// Throws InputError if the mapping cannot be inverted for the SAH's glove-driven joints (each must
 /// be driven by exactly one sensor, and each sensor must drive at most one of them) or a SAH joint
 /// is missing from `handJoints`.
-SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& parameters,
-                                             const HandMapping& mapping, const JointLimits& handJoints);
+SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& parameters, const HandMapping& mapping,
+                                             const JointLimits& handJoints);
 
 }  // namespace pmdplan

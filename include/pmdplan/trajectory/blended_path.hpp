@@ -12,9 +12,9 @@
 namespace pmdplan {
 
 class BlendedPath {
-public:
+ public:
   struct Segment {
-    double start = 0.0;   ///< arc length where the segment begins
+    double start = 0.0;  ///< arc length where the segment begins
     double length = 0.0;
     bool circular = false;
     Eigen::VectorXd origin;  ///< linear: the first point; circular: the centre
@@ -44,9 +44,10 @@ public:
   /// Segment holding s (at a boundary the one that begins there unless `before`).
   const Segment& segmentAt(double s, bool before = false) const;
 
-private:
+ private:
   void addLinear(const Eigen::VectorXd& from, const Eigen::VectorXd& to);
-  void addArc(const Eigen::VectorXd& centre, const Eigen::VectorXd& x, const Eigen::VectorXd& y, double radius, double angle);
+  void addArc(const Eigen::VectorXd& centre, const Eigen::VectorXd& x, const Eigen::VectorXd& y, double radius,
+              double angle);
 
   std::vector<Segment> segments_;
   std::vector<SwitchingPoint> switchingPoints_;

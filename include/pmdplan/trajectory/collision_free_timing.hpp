@@ -17,8 +17,9 @@ struct CollisionFreeTiming {
 };
 
 /// Halves the tolerance at most `halvings` times before falling back to 0.
-CollisionFreeTiming timeCollisionFree(const std::vector<Configuration>& waypoints, const std::vector<JointMotionLimit>& limits,
-                                      const TimingSettings& settings, StateValidator& states, const SweptDistanceBound& bound,
-                                      double tolerance, int halvings = 6);
+CollisionFreeTiming timeCollisionFree(const std::vector<Configuration>& waypoints,
+                                      const std::vector<JointMotionLimit>& limits, const TimingSettings& settings,
+                                      StateValidator& states, const SweptDistanceBound& bound, double tolerance,
+                                      int halvings = 6);
 
 }  // namespace pmdplan

@@ -11,7 +11,7 @@
 namespace pmdplan {
 
 class PhasePlane {
-public:
+ public:
   /// Limits per joint, in the path's dimension order (all positive).
   PhasePlane(const BlendedPath& path, std::vector<double> velocity, std::vector<double> acceleration);
 
@@ -26,7 +26,7 @@ public:
   /// [s̈_min, s̈_max] at (s, ṡ); empty (min > max) above the acceleration limit curve.
   std::pair<double, double> accelerationRange(double s, double speed, bool before = false) const;
 
-private:
+ private:
   const BlendedPath& path_;
   std::vector<double> velocity_;
   std::vector<double> acceleration_;

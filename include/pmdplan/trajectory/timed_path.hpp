@@ -37,7 +37,7 @@ struct TimedState {
 };
 
 class TimedPath {
-public:
+ public:
   /// `limits` one per joint of the waypoints. Consecutive equal waypoints are merged; a path with
   /// a single distinct waypoint has duration 0.
   TimedPath(const std::vector<Configuration>& waypoints, const std::vector<JointMotionLimit>& limits,
@@ -49,7 +49,7 @@ public:
   /// The blended paths, one per stretch between two stops.
   std::vector<const BlendedPath*> paths() const;
 
-private:
+ private:
   struct Piece {
     std::unique_ptr<BlendedPath> path;
     std::vector<PhasePoint> profile;

@@ -16,12 +16,12 @@ namespace pmdplan {
 
 struct Obstacle {
   std::string name;
-  Shape shape;                                               ///< mesh paths resolved to absolute
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();    ///< in the world frame
+  Shape shape;                                             ///< mesh paths resolved to absolute
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< in the world frame
 };
 
 struct Task {
-  std::filesystem::path file;   ///< where it was read from (empty if built in code)
+  std::filesystem::path file;  ///< where it was read from (empty if built in code)
   std::string name;
   std::string description;
   std::shared_ptr<const RobotModel> robot;
