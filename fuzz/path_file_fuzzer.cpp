@@ -1,5 +1,5 @@
 #include "fuzz_input.hpp"
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return pmdplan::fuzz::expectAcceptedOrInputError(

@@ -16,7 +16,7 @@
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
 #include "pmdplan/glove/glove_serial_stream.hpp"
-#include "pmdplan/io/synergy_plots.hpp"
+#include "pmdplan/io/figures/synergy_plots.hpp"
 #include "pmdplan/model/robot_model.hpp"
 #include "pmdplan/synergy/figure7_joint_pairs.hpp"
 #include "pmdplan/synergy/graspit_eigengrasp_import.hpp"

@@ -7,9 +7,9 @@
 #include "command_registry.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/path_file.hpp"
-#include "pmdplan/io/path_robot_match.hpp"
-#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/viewer/path_robot_match.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/world/task.hpp"
 #include "trajectory_output.hpp"
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/trajectory_file.hpp"
+#include "pmdplan/io/files/trajectory_file.hpp"
 #include "pmdplan/trajectory/collision_free_timing.hpp"
 #include "pmdplan/trajectory/joint_motion_limits.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "pmdplan/collision/collision_checking.hpp"
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/trajectory/timed_path.hpp"
 #include "pmdplan/world/task.hpp"
 

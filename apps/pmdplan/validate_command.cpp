@@ -8,7 +8,7 @@
 #include "pmdplan/collision/path_validation.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan::cli {

@@ -5,7 +5,7 @@
 #include "pmdplan/bench/human_likeness.hpp"
 #include "pmdplan/bench/ompl_planning.hpp"
 #include "pmdplan/collision/path_validation.hpp"
-#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"

@@ -15,7 +15,7 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/path_set.hpp"
+#include "pmdplan/io/viewer/path_set.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 
 namespace pmdplan {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pmdplan/io/svg_elements.hpp"
+#include "pmdplan/io/figures/svg_elements.hpp"
 
 namespace pmdplan {
 namespace {

@@ -1,7 +1,7 @@
 #include "pmdplan/bench/task_bench.hpp"
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/synergy_readout.hpp"
+#include "pmdplan/io/viewer/synergy_readout.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 
 namespace pmdplan {

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "pmdplan/collision/exact_collision_checker.hpp"
-#include "pmdplan/io/path_file.hpp"
-#include "pmdplan/io/trajectory_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/files/trajectory_file.hpp"
 #include "pmdplan/trajectory/joint_motion_limits.hpp"
 #include "pmdplan/trajectory/timed_path_inspection.hpp"
 #include "pmdplan/world/task.hpp"

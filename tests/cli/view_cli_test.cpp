@@ -16,8 +16,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "pmdplan/io/path_file.hpp"
-#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/synergy/synergy_projection.hpp"
 #include "pmdplan/world/task.hpp"

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pmdplan/io/path_file.hpp"
-#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/world/task.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"

@@ -3,7 +3,7 @@
 // replaced by a triangulated unit shape in an ASCII STL file, sized by the mesh's scale
 // attribute. Inscribed tessellations (vertices on the primitive's surface) lie inside the
 // primitive; circumscribed ones (faces tangent to it or outside) contain it. Used by the tests and
-// by bench/collision_check_bench.cpp.
+// by benchmarks/collision_check_bench.cpp.
 #include <tinyxml2.h>
 
 #include <Eigen/Geometry>

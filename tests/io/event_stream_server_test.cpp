@@ -1,4 +1,4 @@
-#include "pmdplan/io/event_stream_server.hpp"
+#include "pmdplan/io/servers/event_stream_server.hpp"
 
 #include <arpa/inet.h>
 #include <gtest/gtest.h>

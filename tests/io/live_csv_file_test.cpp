@@ -1,4 +1,4 @@
-#include "pmdplan/io/live_csv_file.hpp"
+#include "pmdplan/io/files/live_csv_file.hpp"
 
 #include <gtest/gtest.h>
 

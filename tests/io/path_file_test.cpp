@@ -1,4 +1,4 @@
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "planning/toy_problem.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/json_text.hpp"
+#include "pmdplan/io/files/json_text.hpp"
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
 
 namespace pmdplan {

@@ -1,11 +1,11 @@
-#include "pmdplan/io/path_robot_match.hpp"
+#include "pmdplan/io/viewer/path_robot_match.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
 
 namespace pmdplan {
 namespace {

@@ -1,4 +1,4 @@
-#include "pmdplan/io/static_file_server.hpp"
+#include "pmdplan/io/servers/static_file_server.hpp"
 
 #include <arpa/inet.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "pmdplan/io/synergy_plots.hpp"
+#include "pmdplan/io/figures/synergy_plots.hpp"
 
 #include <gtest/gtest.h>
 

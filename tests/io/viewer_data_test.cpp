@@ -1,9 +1,9 @@
-#include "pmdplan/io/viewer_data.hpp"
+#include "pmdplan/io/viewer/viewer_data.hpp"
 
 #include <gtest/gtest.h>
 
-#include "pmdplan/io/robot_mimic.hpp"
-#include "pmdplan/io/viewer_folder.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
+#include "pmdplan/io/viewer/viewer_folder.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {

@@ -13,7 +13,7 @@
 #include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/bench/run_record.hpp"
 #include "pmdplan/bench/task_bench.hpp"
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/planning/planner_parameters.hpp"
 
 namespace pmdplan {

@@ -1,4 +1,4 @@
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 
 #include <cmath>
 #include <set>
@@ -7,8 +7,8 @@
 #include "json_reading.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/json_text.hpp"
-#include "pmdplan/io/statistics_json.hpp"
+#include "pmdplan/io/files/json_text.hpp"
+#include "pmdplan/io/files/statistics_json.hpp"
 
 namespace pmdplan {
 

@@ -1,4 +1,4 @@
-#include "pmdplan/io/svg_elements.hpp"
+#include "pmdplan/io/figures/svg_elements.hpp"
 
 #include <cstdio>
 

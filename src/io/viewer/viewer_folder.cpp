@@ -1,11 +1,11 @@
-#include "pmdplan/io/viewer_folder.hpp"
+#include "pmdplan/io/viewer/viewer_folder.hpp"
 
 #include <cstdlib>
 #include <stdexcept>
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
-#include "pmdplan/io/json_text.hpp"
+#include "pmdplan/io/files/json_text.hpp"
 
 namespace pmdplan {
 namespace {

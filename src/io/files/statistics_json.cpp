@@ -1,4 +1,4 @@
-#include "pmdplan/io/statistics_json.hpp"
+#include "pmdplan/io/files/statistics_json.hpp"
 
 #include "json_reading.hpp"
 

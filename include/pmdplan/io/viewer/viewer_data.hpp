@@ -31,9 +31,9 @@
 #include <string>
 #include <vector>
 
-#include "pmdplan/io/path_file.hpp"
-#include "pmdplan/io/path_timeline.hpp"
-#include "pmdplan/io/trajectory_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/files/trajectory_file.hpp"
+#include "pmdplan/io/viewer/path_timeline.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
 #include "pmdplan/world/task.hpp"
 

@@ -1,4 +1,4 @@
-#include "pmdplan/io/trajectory_file.hpp"
+#include "pmdplan/io/files/trajectory_file.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/number_text.hpp"
-#include "pmdplan/io/json_text.hpp"
+#include "pmdplan/io/files/json_text.hpp"
 
 namespace pmdplan {
 namespace {

@@ -1,7 +1,7 @@
 // The PMD planner on the five paper tasks, planning only (no validation, no process per run):
 // every iteration is one seeded run (seed 1, 2, ...), on the fast or the exact checker. Prints
 // the time per run and, after the table, each task's median and 90th percentile over the runs
-// made; the thing to profile (`perf record build/bench/planning_bench --benchmark_filter=...`).
+// made; the thing to profile (`perf record build/benchmarks/planning_bench --benchmark_filter=...`).
 //
 //   planning_bench [--benchmark_min_time=2] [--benchmark_filter=can_in_box]
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-#include "pmdplan/io/event_stream_server.hpp"
+#include "pmdplan/io/servers/event_stream_server.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -12,7 +12,7 @@
 #include <cstring>
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/static_file_server.hpp"
+#include "pmdplan/io/servers/static_file_server.hpp"
 
 namespace pmdplan {
 namespace {

@@ -1,4 +1,4 @@
-#include "pmdplan/io/viewer_data.hpp"
+#include "pmdplan/io/viewer/viewer_data.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/path_robot_match.hpp"
-#include "pmdplan/io/robot_mimic.hpp"
-#include "pmdplan/io/state_clearance.hpp"
-#include "pmdplan/io/statistics_json.hpp"
-#include "pmdplan/io/synergy_readout.hpp"
+#include "pmdplan/io/files/statistics_json.hpp"
+#include "pmdplan/io/viewer/path_robot_match.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
+#include "pmdplan/io/viewer/state_clearance.hpp"
+#include "pmdplan/io/viewer/synergy_readout.hpp"
 
 namespace pmdplan {
 namespace {

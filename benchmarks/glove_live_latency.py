@@ -5,7 +5,7 @@
 median, 95th percentile and maximum; asserts nothing. The browser's share is measured by
 viewer/test/live_glove_browser_test.mjs.
 
-    python3 bench/glove_live_latency.py build/pmdplan [--frames 500] [--rate 100]
+    python3 benchmarks/glove_live_latency.py build/pmdplan [--frames 500] [--rate 100]
 """
 import argparse
 import json

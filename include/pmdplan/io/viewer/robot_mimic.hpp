@@ -2,7 +2,7 @@
 // The mimic table of a path file, from a robot model's coupled joints.
 #include <vector>
 
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/model/robot_model.hpp"
 
 namespace pmdplan {

@@ -1,4 +1,4 @@
-#include "pmdplan/io/synergy_plots.hpp"
+#include "pmdplan/io/figures/synergy_plots.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "pmdplan/core/atomic_file.hpp"
-#include "pmdplan/io/svg_elements.hpp"
+#include "pmdplan/io/figures/svg_elements.hpp"
 #include "pmdplan/synergy/figure7_joint_pairs.hpp"
 
 namespace pmdplan {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "pmdplan/io/viewer_data.hpp"
+#include "pmdplan/io/viewer/viewer_data.hpp"
 
 namespace pmdplan {
 

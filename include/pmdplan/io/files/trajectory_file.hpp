@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/trajectory/joint_trajectory.hpp"
 
 namespace pmdplan {

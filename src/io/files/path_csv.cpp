@@ -1,4 +1,4 @@
-#include "pmdplan/io/path_csv.hpp"
+#include "pmdplan/io/files/path_csv.hpp"
 
 #include <cmath>
 #include <stdexcept>

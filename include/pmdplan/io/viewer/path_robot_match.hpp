@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "pmdplan/io/path_file.hpp"
+#include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/model/robot_model.hpp"
 

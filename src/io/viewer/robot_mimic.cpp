@@ -1,4 +1,4 @@
-#include "pmdplan/io/robot_mimic.hpp"
+#include "pmdplan/io/viewer/robot_mimic.hpp"
 
 namespace pmdplan {
 

@@ -1,4 +1,4 @@
-#include "pmdplan/io/json_text.hpp"
+#include "pmdplan/io/files/json_text.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "pmdplan/io/path_file.hpp"
-#include "pmdplan/io/trajectory_file.hpp"
-#include "pmdplan/io/viewer_data.hpp"
+#include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/files/trajectory_file.hpp"
+#include "pmdplan/io/viewer/viewer_data.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan {

@@ -1,4 +1,4 @@
-#include "pmdplan/io/state_clearance.hpp"
+#include "pmdplan/io/viewer/state_clearance.hpp"
 
 #include <algorithm>
 #include <limits>

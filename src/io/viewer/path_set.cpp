@@ -1,4 +1,4 @@
-#include "pmdplan/io/path_set.hpp"
+#include "pmdplan/io/viewer/path_set.hpp"
 
 #include <algorithm>
 #include <map>

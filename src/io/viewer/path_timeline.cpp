@@ -1,4 +1,4 @@
-#include "pmdplan/io/path_timeline.hpp"
+#include "pmdplan/io/viewer/path_timeline.hpp"
 
 #include <cmath>
 #include <stdexcept>
