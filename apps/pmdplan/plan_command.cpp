@@ -1,5 +1,5 @@
-// `pmdplan plan [TASK]`: the paper's PMD roadmap planner (or its full-space baseline) on a task,
-// writing the path file. Exit 0 solved, 1 not solved within the limits, 2 bad input.
+// `pmdplan plan [TASK]`: the paper's PMD roadmap planner (its full-space baseline, or our lazy PMD
+// roadmap) on a task, writing the path file. Exit 0 solved, 1 not solved within the limits, 2 bad input.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -7,6 +7,7 @@
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
 #include "planner_setting_options.hpp"
+#include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/atomic_file.hpp"
@@ -27,6 +28,14 @@
 namespace pmdplan::cli {
 namespace {
 
+/// "pmd, full, pmd-lazy": the roster's planners of ours, which `plan` runs.
+std::string ourPlannerNames() {
+  std::string names;
+  for (const PlannerEntry& entry : plannerRoster())
+    if (entry.family == PlannerFamily::PmdRoadmap) names += (names.empty() ? "" : ", ") + entry.name;
+  return names;
+}
+
 struct Options {
   std::string task = "can_on_table";
   std::string planner = "pmd";
@@ -43,8 +52,10 @@ struct Options {
 };
 
 int run(const Options& o) {
-  const auto mode = parseHandSamplingMode(o.planner);
-  if (!mode) throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected pmd or full");
+  const auto planner = findPlanner(o.planner);
+  if (!planner || planner->family != PlannerFamily::PmdRoadmap)
+    throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected " + ourPlannerNames());
+  const std::optional<HandSamplingMode> mode = planner->mode;
   checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
   const std::filesystem::path output =
@@ -65,6 +76,7 @@ int run(const Options& o) {
   std::optional<SynergyModel> synergies;
   if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
   TaskPlanningOptions options;
+  options.algorithm = planner->algorithm;
   options.mode = *mode;
   options.parameters = resolvePlannerSettings(o.settings, *mode);
   options.synergies = synergies ? &*synergies : nullptr;
@@ -139,7 +151,8 @@ const CommandRegistrar registrar{
       addPackagePathOption(app);
       app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
       app.add_option("--planner", o->planner,
-                     "pmd (the paper's planner) or full (hands sampled over the whole joint box)");
+                     "pmd (the paper's planner), full (hands sampled over the whole joint box) or pmd-lazy (our "
+                     "lazy PMD roadmap, docs/planners.md)");
       app.add_option(
           "--checker", o->checker,
           "fast (default: convex parts and lane kernels, FCL only near contact; the same answers) or exact (FCL only)");

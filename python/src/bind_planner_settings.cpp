@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "planner_settings.hpp"
+#include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan::python {
@@ -21,9 +22,10 @@ ArmBoxGrowth growthFrom(const std::string& name) {
 }
 
 HandSamplingMode modeFrom(const std::string& planner) {
-  const auto mode = parseHandSamplingMode(planner);
-  if (!mode) throw InputError("", "--planner", "'" + planner + "' is not a planner; expected pmd or full");
-  return *mode;
+  const auto entry = findPlanner(planner);
+  if (!entry || entry->family != PlannerFamily::PmdRoadmap)
+    throw InputError("", "--planner", "'" + planner + "' is not a planner; expected pmd, full or pmd-lazy");
+  return entry->mode;
 }
 
 }  // namespace
@@ -59,7 +61,8 @@ void bindPlannerSettings(py::module_& m) {
   py::class_<PlannerParameters>(m, "PlannerSettings",
                                 "Settings of the PMD roadmap planner (Algorithm 4); defaults from the paper's Table 3.")
       .def(py::init([](const std::string& planner) { return PlannerParameters::defaultsFor(modeFrom(planner)); }),
-           py::arg("planner") = "pmd", "Table 3's values for planner 'pmd' (n_A = n_H = 10) or 'full' (20).")
+           py::arg("planner") = "pmd",
+           "Table 3's values for planner 'pmd' or 'pmd-lazy' (n_A = n_H = 10) or 'full' (20).")
       .def_readwrite("initial_arm_half_size", &PlannerParameters::initialArmHalfSize,
                      "rho_a: initial half-size of the arm hypercubes, normalised units (Table 3: 0.001).")
       .def_property(
@@ -87,6 +90,26 @@ void bindPlannerSettings(py::module_& m) {
           "max_pmds", [](const PlannerParameters& p) { return p.pmdBox.maxDirections; },
           [](PlannerParameters& p, int v) { p.pmdBox.maxDirections = v; }, "Most PMDs the hand dimension grows to (4).")
       .def_readwrite("smooth", &PlannerParameters::smooth, "Smooth the path (Sect. 5.3).")
+      .def_property(
+          "lazy_batch", [](const PlannerParameters& p) { return p.lazy.batch; },
+          [](PlannerParameters& p, std::size_t v) { p.lazy.batch = v; },
+          "pmd-lazy: free samples drawn per round before the roadmap is searched again (8).")
+      .def_property(
+          "lazy_neighbours", [](const PlannerParameters& p) { return p.lazy.neighbours; },
+          [](PlannerParameters& p, std::size_t v) { p.lazy.neighbours = v; },
+          "pmd-lazy: most lazy edges from a new sample to its nearest nodes (10).")
+      .def_property(
+          "lazy_radius", [](const PlannerParameters& p) { return p.lazy.radiusFactor; },
+          [](PlannerParameters& p, double v) { p.lazy.radiusFactor = v; },
+          "pmd-lazy: lazy edges join nodes at most this multiple of d(start, goal) apart (1).")
+      .def_property(
+          "lazy_probes", [](const PlannerParameters& p) { return p.lazy.probes; },
+          [](PlannerParameters& p, std::size_t v) { p.lazy.probes = v; },
+          "pmd-lazy: inner states of each candidate edge checked before its motion check (3).")
+      .def_property(
+          "lazy_arm_growth", [](const PlannerParameters& p) { return p.lazy.armGrowth; },
+          [](PlannerParameters& p, double v) { p.lazy.armGrowth = v; },
+          "pmd-lazy: rho_a is multiplied by this after each round without a path (2).")
       .def("check", &checkPlannerParameters, "Raises InputError (the CLI's message) for a value out of range.")
       .def("__repr__", [](const PlannerParameters& p) {
         std::ostringstream text;

@@ -90,6 +90,7 @@ PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const Plan
   std::optional<PySynergyModel> model;
   if (entry.mode == HandSamplingMode::Synergy) model = synergiesFor(*task.task, synergies);
   TaskPlanningOptions options;
+  options.algorithm = entry.algorithm;
   options.mode = entry.mode;
   options.parameters = plannerParametersFrom(settings, entry.mode, seed, timeLimit);
   options.synergies = model ? model->model.get() : nullptr;

@@ -30,6 +30,7 @@ void keepPath(const TaskBench& bench, const RunRecord& record, const std::vector
 RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record,
                         const PlannerParameters& parameters, PathFile* path) {
   TaskPlanningOptions options;
+  options.algorithm = planner.algorithm;
   options.mode = planner.mode;
   options.parameters = parameters;
   options.synergies = &bench.synergies();

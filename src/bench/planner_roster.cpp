@@ -9,6 +9,8 @@ const std::vector<PlannerEntry>& plannerRoster() {
          "the paper's planner, hands from the PMD subspace"},
         {"full", PlannerFamily::PmdRoadmap, HandSamplingMode::FullSpace, "",
          "the same roadmap, hands over the whole joint box"},
+        {"pmd-lazy", PlannerFamily::PmdRoadmap, HandSamplingMode::Synergy, "",
+         "our lazy PMD roadmap: PMD samples, edges checked only on candidate paths", false, RoadmapAlgorithm::Lazy},
         {"ompl:RRTConnect", PlannerFamily::Ompl, HandSamplingMode::Synergy, "RRTConnect", "OMPL bidirectional RRT"},
         {"ompl:PRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "PRM", "OMPL probabilistic roadmap"},
         {"ompl:LazyPRM", PlannerFamily::Ompl, HandSamplingMode::Synergy, "LazyPRM", "OMPL PRM with lazy edge checks"},

@@ -82,6 +82,7 @@ void PlannerParameters::check() const {
   if (!(timeLimit > 0.0) || (std::isfinite(timeLimit) && timeLimit > kMaxFiniteTimeLimitSeconds))
     throw InputError("", "time-limit",
                      "must be a positive number of seconds up to 1e6 (or inf: no limit), got " + text(timeLimit));
+  lazy.check();
 }
 
 }  // namespace pmdplan

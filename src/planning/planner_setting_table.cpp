@@ -136,6 +136,21 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
           [](auto& p) -> auto& { return p.timeLimit; }),
       setting<std::uint64_t>(
           "seed", "", "random seed", [](auto& p) -> auto& { return p.seed; }),
+      setting<std::size_t>(
+          "lazy-batch", "", "pmd-lazy: free samples drawn per round before the roadmap is searched again",
+          [](auto& p) -> auto& { return p.lazy.batch; }),
+      setting<std::size_t>(
+          "lazy-neighbours", "", "pmd-lazy: most lazy edges from a new sample to its nearest nodes",
+          [](auto& p) -> auto& { return p.lazy.neighbours; }),
+      setting<double>(
+          "lazy-radius", "", "pmd-lazy: lazy edges join nodes at most this multiple of d(c_ini, c_goal) apart",
+          [](auto& p) -> auto& { return p.lazy.radiusFactor; }),
+      setting<std::size_t>(
+          "lazy-probes", "", "pmd-lazy: inner states of each candidate edge checked before its motion check",
+          [](auto& p) -> auto& { return p.lazy.probes; }),
+      setting<double>(
+          "lazy-arm-growth", "", "pmd-lazy: rho_a is multiplied by this after each round without a path",
+          [](auto& p) -> auto& { return p.lazy.armGrowth; }),
   };
   return table;
 }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "pmdplan/planning/lazy_pmd_planner.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 
@@ -23,12 +24,21 @@ TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const
   const auto began = std::chrono::steady_clock::now();
   result.grasp = graspApproach(task, checking.exact(), checking.tolerance(), options.grasp);
   const double graspSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  PmdRoadmapPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
-  planner.setStartAndGoal(task.start, result.grasp ? result.grasp->pregrasp : task.goal);
-  if (progress) planner.setProgressCallback(std::move(progress));
-  result.status = planner.solve();
-  result.path = planner.path();
-  result.statistics = planner.statistics();
+  const Configuration& approachGoal = result.grasp ? result.grasp->pregrasp : task.goal;
+  if (options.algorithm == RoadmapAlgorithm::Lazy) {
+    LazyPmdPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
+    planner.setStartAndGoal(task.start, approachGoal);
+    result.status = planner.solve();
+    result.path = planner.path();
+    result.statistics = planner.statistics();
+  } else {
+    PmdRoadmapPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
+    planner.setStartAndGoal(task.start, approachGoal);
+    if (progress) planner.setProgressCallback(std::move(progress));
+    result.status = planner.solve();
+    result.path = planner.path();
+    result.statistics = planner.statistics();
+  }
   // Finding the pre-grasp is part of solving the task.
   if (result.grasp) result.statistics.planningTime += graspSeconds;
   if (result.grasp && result.statistics.solved()) {

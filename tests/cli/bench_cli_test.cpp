@@ -46,7 +46,7 @@ void expectBadInput(const std::string& arguments, const std::string& field, cons
 
 TEST(BenchCli, AnUnknownPlannerIsBadInputThatListsTheKnownOnes) {
   expectBadInput("bench can_on_table --planners pmd,RRTConnect", "--planners",
-                 "'RRTConnect' is not a planner; known planners: pmd, full, ompl:RRTConnect, ompl:PRM");
+                 "'RRTConnect' is not a planner; known planners: pmd, full, pmd-lazy, ompl:RRTConnect, ompl:PRM");
 }
 
 TEST(BenchCli, ZeroOrNegativeRunsAreBadInput) {

@@ -42,7 +42,12 @@ TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
                                                     {"max-pmds", "2"},
                                                     {"smooth", "off"},
                                                     {"time-limit", "inf"},
-                                                    {"seed", "18446744073709551615"}};
+                                                    {"seed", "18446744073709551615"},
+                                                    {"lazy-batch", "3"},
+                                                    {"lazy-neighbours", "5"},
+                                                    {"lazy-radius", "1.5"},
+                                                    {"lazy-probes", "0"},
+                                                    {"lazy-arm-growth", "1.25"}};
   ASSERT_EQ(other.size(), plannerSettingTable().size()) << "a new setting needs a value here";
   for (const auto& [flag, value] : other) {
     PlannerParameters p;

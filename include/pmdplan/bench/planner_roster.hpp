@@ -1,11 +1,12 @@
 #pragma once
-// The planners `pmdplan bench` can compare, by the names the command line uses: ours (pmd, full)
+// The planners `pmdplan bench` can compare, by the names the command line uses: ours (pmd, full, pmd-lazy)
 // and OMPL's geometric planners (ompl:RRTConnect, ...), all on the same checks.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "pmdplan/planning/hand_sampling_mode.hpp"
+#include "pmdplan/planning/task_planning.hpp"
 
 namespace pmdplan {
 
@@ -22,6 +23,8 @@ struct PlannerEntry {
   std::string description;
   /// Ompl only: states drawn by PMD sampling (name "ompl:<Planner>@pmd").
   bool pmdSampling = false;
+  /// PmdRoadmap only: the paper's roadmap or the lazy one.
+  RoadmapAlgorithm algorithm = RoadmapAlgorithm::Paper;
 };
 
 /// Every known planner, in the order the help and error messages list them.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "pmdplan/planning/hand_sampling_mode.hpp"
+#include "pmdplan/planning/lazy_pmd_settings.hpp"
 #include "pmdplan/planning/synergy_hand_sampler.hpp"
 
 namespace pmdplan {
@@ -73,6 +74,8 @@ struct PlannerParameters {
   std::uint64_t seed = 1;
   /// Apply the smoothing of Sect. 5.3 to the path A* finds.
   bool smooth = true;
+  /// The lazy PMD planner's own settings (`--planner pmd-lazy`); the paper's planner ignores them.
+  LazyPmdSettings lazy;
 
   /// A preset's values for a mode: Table 3's n_A = n_H = 10 for Synergy, 20 for FullSpace.
   static PlannerParameters preset(PlannerPreset preset, HandSamplingMode mode);

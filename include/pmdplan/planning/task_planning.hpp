@@ -3,6 +3,7 @@
 // of the chosen mode and the PMD roadmap planner, wired the same way for the CLI and the
 // benchmarks. A goal that grasps the task's target is planned in two phases (grasp_approach.hpp):
 // the roadmap planner's path to the pre-grasp (the approach), then the closing segment to the goal.
+// The lazy planner is wired the same way; the progress callback is the paper planner's only.
 #include <optional>
 #include <vector>
 
@@ -14,7 +15,14 @@
 
 namespace pmdplan {
 
+/// Which of our planners plans the approach.
+enum class RoadmapAlgorithm {
+  Paper,  ///< the paper's PMD roadmap (pmd_roadmap_planner.hpp): `pmd`, `full`
+  Lazy,   ///< the lazy PMD roadmap (lazy_pmd_planner.hpp): `pmd-lazy`
+};
+
 struct TaskPlanningOptions {
+  RoadmapAlgorithm algorithm = RoadmapAlgorithm::Paper;
   HandSamplingMode mode = HandSamplingMode::Synergy;
   PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   const SynergyModel* synergies = nullptr;  ///< required for the Synergy mode

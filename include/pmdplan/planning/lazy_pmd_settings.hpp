@@ -1,0 +1,30 @@
+#pragma once
+// The settings of the lazy PMD planner (lazy_pmd_planner.hpp) that the paper's planner does not
+// have. The ones both share (rho_a, kappa, max-pmds, n_H, time limit, seed, smoothing) stay in
+// PlannerParameters; these live there as its `lazy` field, so the command line reaches them
+// through planner_setting_table.hpp like every other setting.
+#include <cstddef>
+
+namespace pmdplan {
+
+struct LazyPmdSettings {
+  /// Free hand-arm nodes sampled per round before the roadmap is searched again. Default 8.
+  std::size_t batch = 8;
+  /// Most lazy edges from a new node to its nearest nodes (the K of Lazy PRM). Default 10.
+  std::size_t neighbours = 10;
+  /// Lazy edges join nodes at most this multiple of d(c_ini, c_goal) apart. Default 1 (the
+  /// paper's neighbour radius).
+  double radiusFactor = 1.0;
+  /// States inside each edge of a candidate path checked one by one (evenly spaced, midpoint
+  /// first) before any edge gets its full motion check: a blocked candidate is most often
+  /// rejected by these few state checks instead of by motion checks. 0: none. Default 3.
+  std::size_t probes = 3;
+  /// rho_a is multiplied by this after every round that found no path, capped at 1. Default 2.
+  double armGrowth = 2.0;
+
+  /// Throws InputError (no file; field the command-line flag without dashes: "lazy-batch", ...)
+  /// for values out of range.
+  void check() const;
+};
+
+}  // namespace pmdplan
