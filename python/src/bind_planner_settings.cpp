@@ -93,7 +93,7 @@ void bindPlannerSettings(py::module_& m) {
       .def_property(
           "lazy_batch", [](const PlannerParameters& p) { return p.lazy.batch; },
           [](PlannerParameters& p, std::size_t v) { p.lazy.batch = v; },
-          "pmd-lazy: free samples drawn per round before the roadmap is searched again (8).")
+          "pmd-lazy: arm boxes sampled along the segment per round, besides the four at its ends (2).")
       .def_property(
           "lazy_neighbours", [](const PlannerParameters& p) { return p.lazy.neighbours; },
           [](PlannerParameters& p, std::size_t v) { p.lazy.neighbours = v; },
@@ -105,7 +105,7 @@ void bindPlannerSettings(py::module_& m) {
       .def_property(
           "lazy_probes", [](const PlannerParameters& p) { return p.lazy.probes; },
           [](PlannerParameters& p, std::size_t v) { p.lazy.probes = v; },
-          "pmd-lazy: inner states of each candidate edge checked before its motion check (3).")
+          "pmd-lazy: inner states of each candidate edge checked before its motion check (10).")
       .def_property(
           "lazy_arm_growth", [](const PlannerParameters& p) { return p.lazy.armGrowth; },
           [](PlannerParameters& p, double v) { p.lazy.armGrowth = v; },

@@ -18,7 +18,6 @@ double radicalInverse(std::size_t n) {
   return value;
 }
 
-
 Configuration interpolate(const Configuration& a, const Configuration& b, double t) { return a + t * (b - a); }
 
 }  // namespace
@@ -95,7 +94,7 @@ PlannerStatus LazyPmdPlanner::solve() {
     // start (their neighbourhoods decide most tasks), in boxes of the initial rho_a (so that some
     // samples stay next to them however far rho_a has grown) and of this round's, then on along
     // the segment at 1/2, 1/4, 3/4, 1/8, ...
-    for (std::size_t i = 0; i < parameters_.lazy.batch && !stop; ++i) {
+    for (std::size_t i = 0; i < 4 + parameters_.lazy.batch && !stop; ++i) {
       if (i < 4)
         sampleNode(i % 2 == 0 ? 1.0 : 0.0, i < 2 ? parameters_.initialArmHalfSize : rho, stop);
       else
@@ -149,8 +148,9 @@ void LazyPmdPlanner::sampleNode(double step, double armHalfSize, std::optional<P
 // candidate path uses it.
 void LazyPmdPlanner::connect(NodeIndex node, double step) {
   std::vector<NodeIndex> neighbours = roadmap_.nearest(node, parameters_.lazy.neighbours, radius_);
-  const std::optional<NodeIndex> forced =
-      step == 0.0 ? std::optional<NodeIndex>{0} : step == 1.0 ? std::optional<NodeIndex>{1} : std::nullopt;
+  const std::optional<NodeIndex> forced = step == 0.0   ? std::optional<NodeIndex>{0}
+                                          : step == 1.0 ? std::optional<NodeIndex>{1}
+                                                        : std::nullopt;
   if (forced && std::find(neighbours.begin(), neighbours.end(), *forced) == neighbours.end())
     neighbours.push_back(*forced);
   for (const NodeIndex other : neighbours) roadmap_.addEdge(other, node);
@@ -213,8 +213,6 @@ PlannerStatus LazyPmdPlanner::endRun(PlannerStatus status) {
 
 bool LazyPmdPlanner::timeIsUp() const { return deadline_ && Clock::now() >= *deadline_; }
 
-double LazyPmdPlanner::elapsedSeconds() const {
-  return std::chrono::duration<double>(Clock::now() - began_).count();
-}
+double LazyPmdPlanner::elapsedSeconds() const { return std::chrono::duration<double>(Clock::now() - began_).count(); }
 
 }  // namespace pmdplan

@@ -18,7 +18,7 @@ std::string text(double value) {
 }  // namespace
 
 void LazyPmdSettings::check() const {
-  if (batch < 1) throw InputError("", "lazy-batch", "must be a whole number of samples >= 1");
+  if (batch > 1'000'000) throw InputError("", "lazy-batch", "must be a whole number of arm boxes from 0 to 1000000");
   if (neighbours < 1) throw InputError("", "lazy-neighbours", "must be a whole number >= 1");
   if (!(radiusFactor > 0.0) || !std::isfinite(radiusFactor))
     throw InputError("", "lazy-radius",

@@ -137,7 +137,7 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
       setting<std::uint64_t>(
           "seed", "", "random seed", [](auto& p) -> auto& { return p.seed; }),
       setting<std::size_t>(
-          "lazy-batch", "", "pmd-lazy: free samples drawn per round before the roadmap is searched again",
+          "lazy-batch", "", "pmd-lazy: arm boxes sampled along the segment per round, besides the four at its ends",
           [](auto& p) -> auto& { return p.lazy.batch; }),
       setting<std::size_t>(
           "lazy-neighbours", "", "pmd-lazy: most lazy edges from a new sample to its nearest nodes",

@@ -23,10 +23,11 @@ struct LazyToyRun {
   toy::WallMotionValidator motionValidator;
   LazyPmdPlanner planner;
 
-  explicit LazyToyRun(PlannerParameters parameters, toy::Wall wall = {},
-                      const Configuration& start = toy::start(), const Configuration& goal = toy::goal())
-      : stateValidator(wall), motionValidator(wall), planner(toy::space(), stateValidator, motionValidator,
-                                                             makeSampler(), parameters) {
+  explicit LazyToyRun(PlannerParameters parameters, toy::Wall wall = {}, const Configuration& start = toy::start(),
+                      const Configuration& goal = toy::goal())
+      : stateValidator(wall),
+        motionValidator(wall),
+        planner(toy::space(), stateValidator, motionValidator, makeSampler(), parameters) {
     planner.setStartAndGoal(start, goal);
   }
 
@@ -150,7 +151,7 @@ TEST(LazyPmdPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
       EXPECT_FALSE(e.message().empty());
     }
   };
-  expectRejected("lazy-batch", [](LazyPmdSettings& s) { s.batch = 0; });
+  expectRejected("lazy-batch", [](LazyPmdSettings& s) { s.batch = 1'000'001; });
   expectRejected("lazy-neighbours", [](LazyPmdSettings& s) { s.neighbours = 0; });
   expectRejected("lazy-radius", [](LazyPmdSettings& s) { s.radiusFactor = 0.0; });
   expectRejected("lazy-radius", [](LazyPmdSettings& s) { s.radiusFactor = std::numeric_limits<double>::infinity(); });

@@ -46,7 +46,7 @@ TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
                                                     {"lazy-batch", "3"},
                                                     {"lazy-neighbours", "5"},
                                                     {"lazy-radius", "1.5"},
-                                                    {"lazy-probes", "0"},
+                                                    {"lazy-probes", "3"},
                                                     {"lazy-arm-growth", "1.25"}};
   ASSERT_EQ(other.size(), plannerSettingTable().size()) << "a new setting needs a value here";
   for (const auto& [flag, value] : other) {

@@ -38,7 +38,8 @@ TEST_P(LazyPlannerOnTask, EverySeedSolvesWithAValidPath) {
   for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
     const TaskPlanningResult result = planLazy(task, checking, model, seed);
     ASSERT_TRUE(result.statistics.solved()) << "seed " << seed << ": " << plannerStatusName(result.status);
-    const PathValidation validation = validateTaskPath(checking.exact(), segments, task, result.path, result.closingFrom);
+    const PathValidation validation =
+        validateTaskPath(checking.exact(), segments, task, result.path, result.closingFrom);
     EXPECT_TRUE(validation.valid) << "seed " << seed << ": "
                                   << (validation.problems.empty() ? "" : validation.problems.front());
     EXPECT_EQ(result.path.front(), task.start);

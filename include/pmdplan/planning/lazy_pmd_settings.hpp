@@ -8,8 +8,10 @@
 namespace pmdplan {
 
 struct LazyPmdSettings {
-  /// Free hand-arm nodes sampled per round before the roadmap is searched again. Default 8.
-  std::size_t batch = 8;
+  /// Arm boxes sampled along the segment per round (at 1/2, 1/4, 3/4, ...), besides the four
+  /// at its ends (at c_goal and at c_ini, of the initial and of the round's rho_a), before the
+  /// roadmap is searched again. Default 2.
+  std::size_t batch = 2;
   /// Most lazy edges from a new node to its nearest nodes (the K of Lazy PRM). Default 10.
   std::size_t neighbours = 10;
   /// Lazy edges join nodes at most this multiple of d(c_ini, c_goal) apart. Default 1 (the
@@ -17,8 +19,8 @@ struct LazyPmdSettings {
   double radiusFactor = 1.0;
   /// States inside each edge of a candidate path checked one by one (evenly spaced, midpoint
   /// first) before any edge gets its full motion check: a blocked candidate is most often
-  /// rejected by these few state checks instead of by motion checks. 0: none. Default 3.
-  std::size_t probes = 3;
+  /// rejected by these few state checks instead of by motion checks. 0: none. Default 10.
+  std::size_t probes = 10;
   /// rho_a is multiplied by this after every round that found no path, capped at 1. Default 2.
   double armGrowth = 2.0;
 
