@@ -1,12 +1,16 @@
 // The PMD planner on the five paper tasks, planning only (no validation, no process per run):
-// every iteration is one seeded run (seed 1, 2, ...), on the fast or the exact checker. Prints
-// the time per run and, after the table, each task's median and 90th percentile over the runs
-// made; the thing to profile (`perf record build/benchmarks/planning_bench --benchmark_filter=...`).
+// every iteration is one seeded run (seed 1, 2, ...), on the fast or the exact checker; and the
+// lazy PMD planner (`plan-lazy/...`, fast checker). Prints the time per run and, after the table,
+// each task's median and 90th percentile over the runs made, with the median time to certify the
+// returned path (a motion check of each of its approach edges, same checker) and the median of
+// planning time / certification time; the thing to profile (`perf record build/benchmarks/planning_bench
+// --benchmark_filter=...`).
 //
 //   planning_bench [--benchmark_min_time=2] [--benchmark_filter=can_in_box]
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -34,17 +38,39 @@ std::map<std::string, std::vector<double>>& planningTimes() {
   return times;
 }
 
-void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind) {
+std::map<std::string, std::vector<double>>& certificationTimes() {
+  static std::map<std::string, std::vector<double>> times;
+  return times;
+}
+
+/// Seconds to motion-check the path's approach edges (up to the pre-grasp of a grasp path).
+double certificationSeconds(const TaskPlanningResult& result, MotionValidator& motions) {
+  const std::size_t last = result.closingFrom.value_or(result.path.size() - 1);
+  const auto began = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < last; ++i) benchmark::DoNotOptimize(motions.isValid(result.path[i], result.path[i + 1]));
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind, RoadmapAlgorithm algorithm) {
   TaskRuns d;
   d.task = loadTaskByName(name);
   d.synergies = loadSynergyModel(dataDirectory() / "synergies" / (d.task.robot->name() + "_default.yaml"));
   d.checking = std::make_unique<CollisionChecking>(d.task, kind);
   TaskPlanningOptions options;
+  options.algorithm = algorithm;
   options.synergies = &d.synergies;
   std::uint64_t seed = 1;
   std::size_t solved = 0, samples = 0, nodes = 0, motionStates = 0;
-  auto& times = planningTimes()[name + "/" + checkerKindName(kind)];
+  const std::string label = (algorithm == RoadmapAlgorithm::Lazy ? "lazy/" : "") + name + "/" + checkerKindName(kind);
+  auto& times = planningTimes()[label];
+  auto& certifications = certificationTimes()[label];
   times.clear();  // the framework calls again with more iterations: keep the last call's runs
+  certifications.clear();
   for (auto _ : state) {
     options.parameters.seed = seed++;
     const TaskPlanningResult result = planTask(d.task, *d.checking, options);
@@ -53,6 +79,11 @@ void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind
     nodes += result.statistics.roadmapNodes;
     motionStates += result.statistics.motionChecks;
     times.push_back(result.statistics.planningTime);
+    if (result.status == PlannerStatus::Solved) {
+      state.PauseTiming();
+      certifications.push_back(certificationSeconds(result, d.checking->motions()));
+      state.ResumeTiming();
+    }
   }
   const auto runs = static_cast<double>(state.iterations());
   state.counters["solved_share"] = static_cast<double>(solved) / runs;
@@ -68,15 +99,24 @@ int main(int argc, char** argv) {
   for (const auto& name : kTasks)
     for (const CheckerKind kind : {CheckerKind::Fast, CheckerKind::Exact})
       benchmark::RegisterBenchmark(("plan/" + name + "/" + checkerKindName(kind)).c_str(), [=](benchmark::State& s) {
-        planRuns(s, name, kind);
+        planRuns(s, name, kind, RoadmapAlgorithm::Paper);
       })->Unit(benchmark::kMillisecond);
+  for (const auto& name : kTasks)
+    benchmark::RegisterBenchmark(("plan-lazy/" + name + "/fast").c_str(), [=](benchmark::State& s) {
+      planRuns(s, name, CheckerKind::Fast, RoadmapAlgorithm::Lazy);
+    })->Unit(benchmark::kMillisecond);
   benchmark::RunSpecifiedBenchmarks();
   std::printf("\nplanning time over the runs made (seeds 1..n)\n");
   for (auto& [label, times] : planningTimes()) {
     if (times.empty()) continue;
     std::sort(times.begin(), times.end());
-    std::printf("  %-28s runs %5zu  median %9.3f ms  p90 %9.3f ms\n", label.c_str(), times.size(),
+    std::printf("  %-28s runs %5zu  median %9.3f ms  p90 %9.3f ms", label.c_str(), times.size(),
                 1e3 * times[times.size() / 2], 1e3 * times[times.size() * 9 / 10]);
+    const std::vector<double>& certifications = certificationTimes()[label];
+    if (!certifications.empty())
+      std::printf("  certify median %7.3f ms  planning / certify %6.1f", 1e3 * median(certifications),
+                  median(times) / median(certifications));
+    std::printf("\n");
   }
   benchmark::Shutdown();
   return 0;

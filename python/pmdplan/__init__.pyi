@@ -110,6 +110,11 @@ class PlannerSettings:
     kappa: float
     max_pmds: int
     smooth: bool
+    lazy_batch: int
+    lazy_neighbours: int
+    lazy_radius: float
+    lazy_probes: int
+    lazy_arm_growth: float
     def __init__(self, planner: str = "pmd") -> None: ...
     def check(self) -> None: ...
 

@@ -28,8 +28,8 @@ def test_pmd_plan_gives_the_clis_path_for_the_same_seed(can_on_table, tmp_path, 
 
 
 def test_every_planner_kind_solves_can_on_table(can_on_table):
-    assert set(["pmd", "full", "ompl:RRTConnect"]) <= set(pmdplan.planners())
-    for planner in ("full", "ompl:RRTConnect"):
+    assert set(["pmd", "full", "pmd-lazy", "ompl:RRTConnect"]) <= set(pmdplan.planners())
+    for planner in ("full", "pmd-lazy", "ompl:RRTConnect"):
         result = pmdplan.plan(can_on_table, planner, seed=1, time_limit=30)
         assert result.solved, planner
         assert result.planner == planner
@@ -52,6 +52,17 @@ def test_settings_reach_the_planner(can_on_table, synergies):
     np.testing.assert_array_equal(result.path, again.path)  # same seed, same path
     other = pmdplan.plan(can_on_table, settings=settings, checker=checker, synergies=synergies, seed=6)
     assert other.seed == 6 and settings.seed == 5
+
+
+def test_lazy_settings_reach_the_lazy_planner(can_on_table):
+    settings = pmdplan.PlannerSettings("pmd-lazy")
+    assert settings.lazy_batch == 2 and settings.lazy_probes == 10
+    first = pmdplan.plan(can_on_table, "pmd-lazy", settings=settings, seed=3)
+    again = pmdplan.plan(can_on_table, "pmd-lazy", settings=settings, seed=3)
+    np.testing.assert_array_equal(first.path, again.path)
+    settings.lazy_radius = 0.0
+    with pytest.raises(pmdplan.InputError, match="--lazy-radius"):
+        pmdplan.plan(can_on_table, "pmd-lazy", settings=settings)
 
 
 def test_sample_limit_is_a_status_not_an_error(can_on_table):
