@@ -137,19 +137,19 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
       setting<std::uint64_t>(
           "seed", "", "random seed", [](auto& p) -> auto& { return p.seed; }),
       setting<std::size_t>(
-          "lazy-batch", "", "pmd-lazy: arm boxes sampled along the segment per round, besides the four at its ends",
+          "lazy-batch", "", "for pmd-lazy: arm boxes sampled along the segment per round, besides the four at its ends",
           [](auto& p) -> auto& { return p.lazy.batch; }),
       setting<std::size_t>(
-          "lazy-neighbours", "", "pmd-lazy: most lazy edges from a new sample to its nearest nodes",
+          "lazy-neighbours", "", "for pmd-lazy: most lazy edges from a new sample to its nearest nodes",
           [](auto& p) -> auto& { return p.lazy.neighbours; }),
       setting<double>(
-          "lazy-radius", "", "pmd-lazy: lazy edges join nodes at most this multiple of d(c_ini, c_goal) apart",
+          "lazy-radius", "", "for pmd-lazy: lazy edges join nodes at most this multiple of d(c_ini, c_goal) apart",
           [](auto& p) -> auto& { return p.lazy.radiusFactor; }),
       setting<std::size_t>(
-          "lazy-probes", "", "pmd-lazy: inner states of each candidate edge checked before its motion check",
+          "lazy-probes", "", "for pmd-lazy: inner states of each candidate edge checked before its motion check",
           [](auto& p) -> auto& { return p.lazy.probes; }),
       setting<double>(
-          "lazy-arm-growth", "", "pmd-lazy: rho_a is multiplied by this after each round without a path",
+          "lazy-arm-growth", "", "for pmd-lazy: rho_a is multiplied by this after each round without a path",
           [](auto& p) -> auto& { return p.lazy.armGrowth; }),
   };
   return table;

@@ -82,6 +82,20 @@ TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
   EXPECT_LT(r.humanLikeness->subspaceDistanceMean, 0.1);
 }
 
+TEST_F(BenchmarkRun, TheLazyPmdPlannerSolvesWithAValidHumanLikePath) {
+  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  parameters.timeLimit = 30.0;
+  for (const std::uint64_t seed : {1, 2, 3}) {
+    parameters.seed = seed;
+    const RunRecord r = runPlannerOnce(*bench_, *findPlanner("pmd-lazy"), 1, parameters);
+    EXPECT_EQ(r.planner, "pmd-lazy");
+    ASSERT_TRUE(r.succeeded()) << "seed " << seed << ": " << r.failure;
+    EXPECT_TRUE(r.valid);
+    ASSERT_TRUE(r.humanLikeness.has_value());
+    EXPECT_LT(r.humanLikeness->subspaceDistanceMean, 0.1) << "seed " << seed;
+  }
+}
+
 TEST_F(BenchmarkRun, TheMeasuresThatDoNotUseThePlannersModelAlsoPreferPmdToFullSpacePaths) {
   // The authors' PMDs and the Fig. 7 couplings were not what pmd sampled from, yet they tell its
   // paths from the full-space baseline's, seed by seed.

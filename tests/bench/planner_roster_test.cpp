@@ -31,13 +31,18 @@ TEST(PlannerRoster, OursMapToTheirHandSamplingModes) {
   EXPECT_EQ(findPlanner("pmd")->mode, HandSamplingMode::Synergy);
   EXPECT_EQ(findPlanner("full")->mode, HandSamplingMode::FullSpace);
   EXPECT_EQ(findPlanner("pmd")->family, PlannerFamily::PmdRoadmap);
+  EXPECT_EQ(findPlanner("pmd")->algorithm, RoadmapAlgorithm::Paper);
+  EXPECT_EQ(findPlanner("full")->algorithm, RoadmapAlgorithm::Paper);
+  EXPECT_EQ(findPlanner("pmd-lazy")->mode, HandSamplingMode::Synergy);
+  EXPECT_EQ(findPlanner("pmd-lazy")->family, PlannerFamily::PmdRoadmap);
+  EXPECT_EQ(findPlanner("pmd-lazy")->algorithm, RoadmapAlgorithm::Lazy);
 }
 
 TEST(PlannerRoster, UnknownNamesAreNotFound) {
   EXPECT_FALSE(findPlanner("RRTConnect").has_value());
   EXPECT_FALSE(findPlanner("ompl:RRTstar").has_value());
   EXPECT_FALSE(isOmplPlannerName("RRTstar"));
-  EXPECT_NE(knownPlannerNames().find("pmd, full, ompl:RRTConnect"), std::string::npos);
+  EXPECT_NE(knownPlannerNames().find("pmd, full, pmd-lazy, ompl:RRTConnect"), std::string::npos);
 }
 
 }  // namespace
