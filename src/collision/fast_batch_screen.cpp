@@ -11,7 +11,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 #include <utility>
 
 #include "lane_distances.hpp"
@@ -385,25 +384,24 @@ void FastCollisionChecker::screenSse2(FastCollisionChecker& c, const double* pos
   for (int first = 0; first < count; first += 2) c.screenLanesOf<lanes::Vec<2>>(poses, count, first, tight);
 }
 
-int FastCollisionChecker::widestLaneWidth() {
-  const std::string_view level = BatchedForwardKinematics::simdLevel();
-  return level == "avx512" ? 8 : level == "avx2" ? 4 : 2;
-}
-
-void FastCollisionChecker::setLaneWidth(int width) {
-  if (!(width == 2 || width == 4 || width == 8) || width > widestLaneWidth())
-    throw std::invalid_argument("lane width " + std::to_string(width) + ": this CPU runs 2 to " +
-                                std::to_string(widestLaneWidth()));
-  laneWidth_ = width;
+void FastCollisionChecker::setSimdLevel(SimdLevel level) {
+  const bool known = level == SimdLevel::sse2 || level == SimdLevel::avx2 || level == SimdLevel::avx512;
+  if (!known || laneWidth(level) > laneWidth(widestSimdLevel()))
+    throw std::invalid_argument(std::string("SIMD level ") + (known ? simdLevelName(level) : "unknown") +
+                                ": this CPU runs sse2 to " + simdLevelName(widestSimdLevel()));
+  simdLevel_ = level;
 }
 
 void FastCollisionChecker::screenLanes(const double* poses, int count, bool tight) {
-  if (laneWidth_ == 8)
-    screenAvx512(*this, poses, count, tight);
-  else if (laneWidth_ == 4)
-    screenAvx2(*this, poses, count, tight);
-  else
-    screenSse2(*this, poses, count, tight);
+  switch (simdLevel_) {
+    case SimdLevel::avx512:
+      return screenAvx512(*this, poses, count, tight);
+    case SimdLevel::avx2:
+      return screenAvx2(*this, poses, count, tight);
+    case SimdLevel::sse2:
+      break;
+  }
+  screenSse2(*this, poses, count, tight);
 }
 
 void FastCollisionChecker::screenBatch(const Configuration* const* configurations, int count, const double* poses,

@@ -20,6 +20,7 @@
 #include "pmdplan/collision/batched_forward_kinematics.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/link_part_model.hpp"
+#include "pmdplan/collision/simd_level.hpp"
 #include "pmdplan/collision/state_validator.hpp"
 
 namespace pmdplan {
@@ -60,13 +61,11 @@ class FastCollisionChecker : public StateValidator {
   /// touched (confirmations are pair tests).
   FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, double band = kDefaultBand);
 
-  /// Lanes per vector in checkBatch's geometric stages: 8 (AVX-512), 4 (AVX2) or 2 (SSE2). The
+  /// The instruction set of checkBatch's geometric stages, lane vectors laneWidth(level) wide: the
   /// widest the CPU has by default; a narrower one can be chosen (tests compare them). Throws
-  /// std::invalid_argument for a width the CPU cannot run.
-  int laneWidth() const { return laneWidth_; }
-  void setLaneWidth(int width);
-  /// The widest lane vectors this CPU runs.
-  static int widestLaneWidth();
+  /// std::invalid_argument for a level the CPU cannot run.
+  SimdLevel simdLevel() const { return simdLevel_; }
+  void setSimdLevel(SimdLevel level);
 
   bool isValid(const Configuration& q) override;
   bool isArmValid(const Configuration& q) override;
@@ -143,7 +142,7 @@ class FastCollisionChecker : public StateValidator {
   void screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
                    double* safe, double* pairGaps);
   // screenBatch's lane-vector stage (fast_batch_screen.cpp): fills pairLaneGaps_, laneSafe_ and
-  // laneScalar_ in vectors laneWidth_ wide. `tight`: every pair's gap as tight as these tests get
+  // laneScalar_ in vectors laneWidth(simdLevel_) wide. `tight`: every pair's gap as tight as these tests get
   // it (the caller keeps them, as motion-check certificates), not just tight enough to prove.
   void screenLanes(const double* poses, int count, bool tight);
   template <class V>
@@ -156,7 +155,7 @@ class FastCollisionChecker : public StateValidator {
 
   ExactCollisionChecker& exact_;
   double band_;
-  int laneWidth_ = widestLaneWidth();
+  SimdLevel simdLevel_ = widestSimdLevel();
   std::vector<LinkParts> links_;
   std::vector<ObstaclePart> obstacles_;
   BatchedForwardKinematics kinematics_;
