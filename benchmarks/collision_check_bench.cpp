@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "collision/primitive_meshes.hpp"
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/core/data_directory.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lane_distances.hpp"
+#include "fast/capsule_capsule.hpp"
 
 namespace pmdplan {
 namespace {

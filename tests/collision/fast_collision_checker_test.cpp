@@ -2,7 +2,7 @@
 // random configurations over the five tasks; its geometric stages flag every pair FCL finds in
 // collision, and every pair they prove overlapping FCL finds in collision too. (Segments:
 // fast_segment_checker_test.cpp.)
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 
 #include <gtest/gtest.h>
 

@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 
