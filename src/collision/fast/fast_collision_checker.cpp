@@ -23,21 +23,21 @@ void FastCollisionChecker::setSimdLevel(SimdLevel level) {
   state_->simdLevel_ = level;
 }
 
-bool FastCollisionChecker::isValid(const Configuration& q) {
-  fast::CheckerState& s = *state_;
+namespace {
+
+/// isValid / isArmValid: one configuration through the scalar screen.
+bool checkOne(fast::CheckerState& s, const Configuration& q, bool armOnly) {
   ++s.checks_;
   if (q.size() != s.kinematics_.dof()) throw std::invalid_argument("configuration size does not match the robot");
   s.kinematics_.computeOne(q.data(), s.poseScratch_.data());
-  return s.decide(q, s.poseScratch_.data(), 1, 0, false, nullptr);
+  return s.decide(q, s.poseScratch_.data(), 1, 0, armOnly, nullptr);
 }
 
-bool FastCollisionChecker::isArmValid(const Configuration& q) {
-  fast::CheckerState& s = *state_;
-  ++s.checks_;
-  if (q.size() != s.kinematics_.dof()) throw std::invalid_argument("configuration size does not match the robot");
-  s.kinematics_.computeOne(q.data(), s.poseScratch_.data());
-  return s.decide(q, s.poseScratch_.data(), 1, 0, true, nullptr);
-}
+}  // namespace
+
+bool FastCollisionChecker::isValid(const Configuration& q) { return checkOne(*state_, q, false); }
+
+bool FastCollisionChecker::isArmValid(const Configuration& q) { return checkOne(*state_, q, true); }
 
 void FastCollisionChecker::checkBatch(const Configuration* const* configurations, int count, bool* valid,
                                       double* safeDisplacement, double* pairGaps) {
