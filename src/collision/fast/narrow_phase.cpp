@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "checker_state.hpp"
-#include "pmdplan/collision/convex_distance.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
 
 namespace pmdplan::fast {
 namespace {

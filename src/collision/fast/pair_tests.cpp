@@ -6,7 +6,7 @@
 #include <tuple>
 
 #include "checker_state.hpp"
-#include "pmdplan/collision/convex_distance.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
 
 namespace pmdplan {
 namespace fast {

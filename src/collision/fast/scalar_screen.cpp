@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "checker_state.hpp"
-#include "pmdplan/collision/convex_distance.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
 
 namespace pmdplan::fast {
 namespace {
