@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "collision/primitive_meshes.hpp"
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/core/data_directory.hpp"
@@ -164,9 +164,9 @@ const std::vector<Configuration>& mix(TaskData& d, int which) { return which == 
 // One iteration checks kLanes configurations: the exact checker one by one, the fast checker in one
 // batch (its forward kinematics and geometric stages run over all of them at once, in lane vectors
 // `laneWidth` wide); times are per configuration.
-void checkStates(benchmark::State& state, const std::string& name, bool fast, int which, int laneWidth) {
+void checkStates(benchmark::State& state, const std::string& name, bool fast, int which, SimdLevel level) {
   auto& d = taskData(name);
-  d.fast->setLaneWidth(laneWidth);
+  d.fast->setSimdLevel(level);
   constexpr int kLanes = FastCollisionChecker::kLanes;
   const auto& states = mix(d, which);
   std::size_t i = 0, valid = 0;
@@ -192,7 +192,7 @@ void checkStates(benchmark::State& state, const std::string& name, bool fast, in
 
 void checkSegments(benchmark::State& state, const std::string& name, bool fast, bool planned) {
   auto& d = taskData(name);
-  d.fast->setLaneWidth(FastCollisionChecker::widestLaneWidth());
+  d.fast->setSimdLevel(widestSimdLevel());
   const auto& segments = planned ? d.planSegments : d.shortSegments;
   SegmentChecker slow(*d.exact, *d.task.robot);
   FastSegmentChecker sweeping(*d.fast, *d.task.robot, SegmentChecker::kDefaultTolerance);
@@ -231,17 +231,19 @@ int main(int argc, char** argv) {
   for (const auto& name : names) {
     // "fast" at the CPU's widest lane vectors, "fast-N" at the narrower widths N it runs too
     // (not for the mesh robot).
-    const int widest = FastCollisionChecker::widestLaneWidth();
-    const int narrowest = name.rfind("mesh:", 0) == 0 ? widest : 2;
+    const SimdLevel widest = widestSimdLevel();
+    const SimdLevel narrowest = name.rfind("mesh:", 0) == 0 ? widest : SimdLevel::sse2;
     for (const auto& [which, label] : {std::pair{0, "plan"}, std::pair{1, "random"}}) {
       benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/exact").c_str(), [=](benchmark::State& s) {
         checkStates(s, name, false, which, widest);
       })->Unit(benchmark::kMicrosecond);
-      for (int width = widest; width >= narrowest; width /= 2)
-        benchmark::RegisterBenchmark(
-            ("check/" + name + "/" + label + "/fast" + (width == widest ? "" : "-" + std::to_string(width))).c_str(),
-            [=](benchmark::State& s) { checkStates(s, name, true, which, width); })
+      for (const SimdLevel level : {SimdLevel::avx512, SimdLevel::avx2, SimdLevel::sse2}) {
+        if (laneWidth(level) > laneWidth(widest) || laneWidth(level) < laneWidth(narrowest)) continue;
+        const std::string suffix = level == widest ? "" : "-" + std::to_string(laneWidth(level));
+        benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/fast" + suffix).c_str(),
+                                     [=](benchmark::State& s) { checkStates(s, name, true, which, level); })
             ->Unit(benchmark::kMicrosecond);
+      }
     }
     for (const auto& [planned, label] : {std::pair{true, "plan"}, std::pair{false, "short"}})
       for (const bool fast : {false, true})
@@ -252,7 +254,7 @@ int main(int argc, char** argv) {
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   std::printf("\nexact / fast time ratio (%s kernels; the fastest repetition of each)\n",
-              BatchedForwardKinematics::simdLevel());
+              simdLevelName(widestSimdLevel()));
   for (const auto& [benchmarkName, exactTime] : reporter.times) {
     const auto at = benchmarkName.rfind("/exact");
     if (at == std::string::npos || at + 6 != benchmarkName.size()) continue;

@@ -8,7 +8,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "pmdplan/collision/simd_level.hpp"
 #include "pmdplan/core/portable_math.hpp"
 
 namespace pmdplan {
@@ -155,25 +156,24 @@ void batchBaseline(const Plan& plan, const double* q, double* poses, double* scr
   walk<BatchedForwardKinematics::kLanes>(plan, q, poses, scratch);
 }
 
-/// The widest kernel the running CPU has, picked once.
-struct BatchDispatch {
-  const char* level;
-  void (*kernel)(const Plan&, const double*, double*, double*);
-};
-
-const BatchDispatch& batchDispatch() {
-  static const BatchDispatch dispatch = [] {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) return BatchDispatch{"avx512", batchAvx512};
-    if (__builtin_cpu_supports("avx2")) return BatchDispatch{"avx2", batchAvx2};
-    return BatchDispatch{"sse2", batchBaseline};
+/// The kernel of the CPU's SIMD level.
+using BatchKernel = void (*)(const Plan&, const double*, double*, double*);
+BatchKernel batchKernel() {
+  static const BatchKernel kernel = [] {
+    switch (widestSimdLevel()) {
+      case SimdLevel::avx512:
+        return batchAvx512;
+      case SimdLevel::avx2:
+        return batchAvx2;
+      case SimdLevel::sse2:
+        break;
+    }
+    return batchBaseline;
   }();
-  return dispatch;
+  return kernel;
 }
 
 }  // namespace
-
-const char* BatchedForwardKinematics::simdLevel() { return batchDispatch().level; }
 
 BatchedForwardKinematics::BatchedForwardKinematics(const RobotModel& model, const Eigen::Isometry3d& base)
     : dof_(model.dof()), linkCount_(static_cast<int>(model.links().size())) {
@@ -220,7 +220,7 @@ BatchedForwardKinematics::BatchedForwardKinematics(const RobotModel& model, cons
 void BatchedForwardKinematics::computeBatch(const double* jointsByLane, double* poses) const {
   thread_local std::vector<double> scratch;
   scratch.resize(3 * static_cast<std::size_t>(plan_.jointCount) * kLanes);
-  batchDispatch().kernel(plan_, jointsByLane, poses, scratch.data());
+  batchKernel()(plan_, jointsByLane, poses, scratch.data());
 }
 
 void BatchedForwardKinematics::addWithAncestors(LinkSet& set, int link) const {

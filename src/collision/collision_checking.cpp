@@ -1,6 +1,6 @@
 #include "pmdplan/collision/collision_checking.hpp"
 
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/fast_segment_checker.hpp"
 
 namespace pmdplan {

@@ -86,7 +86,7 @@ bool FastSegmentChecker::isValid(const Configuration& from, const Configuration&
   std::sort(byPosition_.begin(), byPosition_.end());
   const auto coarseCover = [&](std::size_t p, long i) {
     long best = -1;
-    const double share = states_.pairShare(p);
+    const double share = states_.pairs().share(p);
     const auto above = std::lower_bound(byPosition_.begin(), byPosition_.end(), std::pair<long, long>(i, -1));
     for (auto it = above == byPosition_.begin() ? above : above - 1; it != byPosition_.end() && it <= above; ++it) {
       const long r = reach(coarseGaps_[static_cast<std::size_t>(it->second) * pairs + p], share, n);
@@ -114,15 +114,15 @@ bool FastSegmentChecker::isValid(const Configuration& from, const Configuration&
     for (const auto& [pair, cover] : covered_) schedule(pair, cover);
     if (testing_.empty()) continue;
     stateAt(i, state_);
-    states_.poseState(state_, testing_.data(), testing_.size());
+    states_.pairs().pose(state_, testing_.data(), testing_.size());
     ++swept;
     for (const std::size_t pair : testing_) {
-      const double gap = states_.testPair(pair);
+      const double gap = states_.pairs().test(pair);
       if (gap < 0.0) {
         statesChecked_ += static_cast<std::size_t>(swept);
         return false;
       }
-      schedule(pair, i + reach(gap, states_.pairShare(pair), n));
+      schedule(pair, i + reach(gap, states_.pairs().share(pair), n));
     }
   }
   statesChecked_ += static_cast<std::size_t>(swept);

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "mesh_enclosure.hpp"
-#include "pmdplan/collision/convex_distance.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
 #include "urdf_capsules.hpp"
 
 namespace pmdplan {

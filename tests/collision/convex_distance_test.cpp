@@ -2,7 +2,7 @@
 // exact; GJK's bounds on the distance between random boxes, cylinders, capsules and spheres hold
 // against FCL's own estimate and close in on each other; partContact never calls two parts apart or overlapping against
 // FCL's answer.
-#include "pmdplan/collision/convex_distance.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
 
 #include <fcl/fcl.h>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // random configurations over the five tasks; its geometric stages flag every pair FCL finds in
 // collision, and every pair they prove overlapping FCL finds in collision too. (Segments:
 // fast_segment_checker_test.cpp.)
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 
 #include <gtest/gtest.h>
 
@@ -146,13 +146,14 @@ TEST(FastCollisionChecker, NearAMeshItGivesFclsAnswerToo) {
 TEST(FastCollisionChecker, BatchesGiveTheExactCheckersAnswers) {
   constexpr int kLanes = FastCollisionChecker::kLanes;
   std::size_t total = 0, colliding = 0;
-  for (int width = 2; width <= FastCollisionChecker::widestLaneWidth(); width *= 2) {
+  for (const SimdLevel level : {SimdLevel::sse2, SimdLevel::avx2, SimdLevel::avx512}) {
+    if (laneWidth(level) > laneWidth(widestSimdLevel())) continue;
     for (const auto& name : kTasks) {
-      SCOPED_TRACE("lane width " + std::to_string(width));
+      SCOPED_TRACE(std::string("SIMD level ") + simdLevelName(level));
       const Task task = loadTaskByName(name);
       ExactCollisionChecker exact(task), reference(task);
       FastCollisionChecker fast(task, exact);
-      fast.setLaneWidth(width);
+      fast.setSimdLevel(level);
       RandomSource random(7);
       for (int batchIndex = 0; batchIndex < 2000; ++batchIndex) {
         const int count = 1 + batchIndex % kLanes;
@@ -182,15 +183,15 @@ TEST(FastCollisionChecker, BatchesGiveTheExactCheckersAnswers) {
   EXPECT_GT(colliding, total / 10);
 }
 
-TEST(FastCollisionChecker, RefusesALaneWidthTheCpuCannotRun) {
+TEST(FastCollisionChecker, RefusesASimdLevelTheCpuCannotRun) {
   const Task task = loadTaskByName("can_on_table");
   ExactCollisionChecker exact(task);
   FastCollisionChecker fast(task, exact);
-  EXPECT_EQ(fast.laneWidth(), FastCollisionChecker::widestLaneWidth());
-  EXPECT_THROW(fast.setLaneWidth(3), std::invalid_argument);
-  EXPECT_THROW(fast.setLaneWidth(16), std::invalid_argument);
-  fast.setLaneWidth(2);
-  EXPECT_EQ(fast.laneWidth(), 2);
+  EXPECT_EQ(fast.simdLevel(), widestSimdLevel());
+  EXPECT_THROW(fast.setSimdLevel(static_cast<SimdLevel>(7)), std::invalid_argument);
+  if (widestSimdLevel() != SimdLevel::avx512) EXPECT_THROW(fast.setSimdLevel(SimdLevel::avx512), std::invalid_argument);
+  fast.setSimdLevel(SimdLevel::sse2);
+  EXPECT_EQ(fast.simdLevel(), SimdLevel::sse2);
 }
 
 }  // namespace

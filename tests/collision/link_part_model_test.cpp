@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "collision/task_configurations.hpp"
-#include "pmdplan/collision/convex_distance.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
 #include "pmdplan/core/random_source.hpp"
 
 namespace pmdplan {

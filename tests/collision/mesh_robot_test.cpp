@@ -11,8 +11,8 @@
 
 #include "collision/primitive_meshes.hpp"
 #include "collision/task_configurations.hpp"
-#include "pmdplan/collision/convex_distance.hpp"
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/fast_segment_checker.hpp"
 #include "pmdplan/collision/link_part_model.hpp"
 #include "pmdplan/collision/segment_checker.hpp"

@@ -3,8 +3,8 @@
 // computation is a short array over the configurations (lanes), so the compiler turns each step
 // into one SIMD instruction over all lanes. The kernels see plain double arrays only (no Eigen
 // types: Eigen built with other vector flags than Debian's FCL and OMPL misaligns across them);
-// AVX-512 and AVX2 builds of them are chosen at run time on CPUs that have them, the SSE2 baseline
-// runs on any x86-64. Mimic joints follow their source joint as in
+// AVX-512 and AVX2 builds of them run on CPUs that have them (widestSimdLevel, simd_level.hpp), the
+// SSE2 baseline on any x86-64. Mimic joints follow their source joint as in
 // ForwardKinematics::jointValues; results equal ForwardKinematics's to rounding (the fast checker's
 // sphere margin absorbs the difference).
 #include <Eigen/Geometry>
@@ -46,9 +46,6 @@ class BatchedForwardKinematics {
   void computeSome(const double* q, double* poses, const LinkSet& links, int frame = -1) const;
   /// The link of which both are descendants (or one is the other), deepest first.
   int commonAncestor(int a, int b) const;
-
-  /// The widest kernels this CPU runs: "avx512", "avx2" or "sse2".
-  static const char* simdLevel();
 
   /// One joint of the tree walk, in plain numbers (parents before children).
   struct Step {

@@ -2,8 +2,8 @@
 // The convex solids the fast checker reasons about, in plain numbers (no Eigen in the inner loops;
 // Eigen types built with other vector flags would misalign against Debian's FCL): capsules (a
 // sphere is a capsule with both ends equal), boxes and cylinders. A capsule is its core segment swept by a ball; boxes
-// and cylinders are their own core (radius 0). Distances between parts come from the cores (convex_distance.hpp) minus
-// the radii.
+// and cylinders are their own core (radius 0). Distances between parts come from the cores (fast/convex_distance.hpp)
+// minus the radii.
 #include <cstdint>
 
 namespace pmdplan {

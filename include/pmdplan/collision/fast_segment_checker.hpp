@@ -7,7 +7,7 @@
 //     FastCollisionChecker::checkBatch, catch most blocked segments at once.
 //  2. Sweep: every pair (two links, or a link and an obstacle) is followed along the segment on
 //     its own. A pair found g apart at state i cannot close that gap before the states its two
-//     sides need to approach by g (at most `pairShare` of the segment per metre, from the joints
+//     sides need to approach by g (at most `PairTests::share` of the segment per metre, from the joints
 //     between them: FastCollisionChecker::setMotion), so it is tested again only there. A state
 //     is posed only when some pair's certificate runs out at it, and only those pairs are tested;
 //     the coarse states' gaps certify pairs around them too.
@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "pmdplan/collision/fast_collision_checker.hpp"
+#include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 

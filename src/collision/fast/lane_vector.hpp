@@ -5,7 +5,7 @@
 // type, and instantiated at the width of the instruction set it is built for (VAMP's design).
 // Private to the collision sources; the files that use it are built with -fno-math-errno (sqrt
 // without errno branches) and -Wno-psabi (the helpers are always inlined and the kernels hold no
-// lambda that returns or takes a vector by value, fast_batch_screen.cpp's transformedRow: no
+// lambda that returns or takes a vector by value, lane_parts.hpp's transformedRow: no
 // vector crosses a call).
 #include <cstring>
 

@@ -1,9 +1,9 @@
-#include "pmdplan/collision/convex_distance.hpp"
+#include "pmdplan/collision/fast/convex_distance.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "lane_distances.hpp"
+#include "capsule_capsule.hpp"
 
 namespace pmdplan {
 namespace {
