@@ -1,11 +1,11 @@
-#include "pmdplan/glove/yaml_input.hpp"
+#include "pmdplan/text/yaml_input.hpp"
 
 #include <algorithm>
 #include <set>
 #include <vector>
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan::yaml_input {
 namespace {
@@ -113,29 +113,6 @@ void checkFormat(const YAML::Node& root, std::string_view expectedFormat, const 
     if (!version.IsScalar() || version.Scalar() != "1")
       throw InputError(file, lineOf(version) + " (version)", "unsupported version; expected 1");
   }
-}
-
-std::string quoted(std::string_view value) {
-  std::string out = "\"";
-  for (const char c : value) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out + "\"";
 }
 
 }  // namespace pmdplan::yaml_input

@@ -1,4 +1,4 @@
-#include "yaml_field.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -32,7 +32,4 @@ bool boolean(const YAML::Node& node, const std::string& file, const std::string&
 /// `format:` and `version:` of our files: optional, but if present they must match.
 void checkFormat(const YAML::Node& root, std::string_view expectedFormat, const std::string& file);
 
-/// A double-quoted YAML string with the characters YAML needs escaped.
-std::string quoted(std::string_view value);
-
 }  // namespace pmdplan::yaml_input

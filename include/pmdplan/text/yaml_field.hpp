@@ -1,6 +1,6 @@
 #pragma once
 // Strict reading of one YAML node together with where it came from, so that every complaint can
-// name the file, the field path (`obstacles[2].cylinder.radius`) and the line. Internal to world/.
+// name the file, the field path (`obstacles[2].cylinder.radius`) and the line.
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
