@@ -6,6 +6,7 @@
 
 #include "bench/record_samples.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "support/input_error_matchers.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {
@@ -43,13 +44,8 @@ TEST(CampaignJournal, AnotherCampaignsFileOrAGarbledLineIsAnError) {
     EXPECT_EQ(error.file(), (dir.path() / "j" / "rank0.jsonl").string());
   }
   std::ofstream(dir.path() / "j" / "rank0.jsonl", std::ios::app) << "not a record\n";
-  try {
-    CampaignJournal(dir.path() / "j", options, 0);
-    ADD_FAILURE() << "accepted a garbled line";
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.field(), "line 3");
-    EXPECT_EQ(error.file(), (dir.path() / "j" / "rank0.jsonl").string());
-  }
+  test::expectInputError([&] { CampaignJournal(dir.path() / "j", options, 0); },
+                         (dir.path() / "j" / "rank0.jsonl").string(), "line 3", "expected one finished run");
 }
 
 TEST(CampaignJournal, LinesAreJsonObjectsOfTheJobAndItsRecord) {
@@ -73,14 +69,8 @@ TEST(CampaignJournal, AnOldTabSeparatedJournalIsAnError) {
   test::TempDir dir;
   std::filesystem::create_directories(dir.path() / "j");
   std::ofstream(dir.path() / "j" / "rank0.tsv") << "# pmdplan bench journal: tasks=can_on_table\n0\trun-record-2\n";
-  try {
-    CampaignJournal(dir.path() / "j", BenchOptions{}, 0);
-    ADD_FAILURE() << "accepted an old journal";
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.file(), (dir.path() / "j" / "rank0.tsv").string());
-    EXPECT_EQ(error.field(), "line 1");
-    EXPECT_NE(error.message().find("older pmdplan"), std::string::npos) << error.message();
-  }
+  test::expectInputError([&] { CampaignJournal(dir.path() / "j", BenchOptions{}, 0); },
+                         (dir.path() / "j" / "rank0.tsv").string(), "line 1", "older pmdplan");
 }
 
 }  // namespace

@@ -8,7 +8,10 @@
 
 namespace pmdplan::yaml_input {
 
-/// Parses one document; a syntax error becomes an InputError naming the line.
+// The node-by-node reading of the glove, synergy and joint-limit files, on the one YAML loader of
+// yaml_field.hpp (parseYamlDocument: empty files, syntax, repeated keys, alias bombs).
+
+/// parseYamlDocument, then a map at the top level.
 YAML::Node parseDocument(std::string_view text, const std::string& file);
 
 /// "line N" (1-based) of a node, for InputError's field.
