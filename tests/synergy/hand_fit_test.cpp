@@ -24,19 +24,28 @@ TEST(HandFit, AModelOfExactlyTheHandsJointsFits) {
 TEST(HandFit, EachMisfitNamesTheFileAndTheField) {
   test::expectInputError([] { checkSynergyModelFitsHand(twoJointModel(), {"a"}, "m.yaml"); }, "m.yaml", "joints",
                          "'b' is not a hand joint of the robot");
-  test::expectInputError([] { checkSynergyModelFitsHand(twoJointModel(), {"a", "b", "c"}, "m.yaml"); }, "m.yaml",
-                         "joints", "hand joint 'c' is missing from the synergy model");
+  test::expectInputError(
+      [] {
+        checkSynergyModelFitsHand(twoJointModel(), {"a", "b", "c"}, "m.yaml");
+      },
+      "m.yaml", "joints", "hand joint 'c' is missing from the synergy model");
   SynergyModel model = twoJointModel();
   model.mean = Eigen::Vector3d(0.5, 0.5, 0.5);
-  test::expectInputError([&] { checkSynergyModelFitsHand(model, {"a", "b"}, "m.yaml"); }, "m.yaml", "mean",
-                         "expected one per joint (2)");
+  test::expectInputError(
+      [&] {
+        checkSynergyModelFitsHand(model, {"a", "b"}, "m.yaml");
+      },
+      "m.yaml", "mean", "expected one per joint (2)");
   model = twoJointModel();
   model.sigma[0] = -0.1;
   test::expectInputError([&] { checkSynergyModelFitsHand(model, {"a", "b"}, ""); }, "", "sigma", ">= 0");
   model = twoJointModel();
   model.ownAxisJoints = {"a", "a"};
-  test::expectInputError([&] { checkSynergyModelFitsHand(model, {"a", "b"}, "m.yaml"); }, "m.yaml", "own_axis_joints",
-                         "listed twice");
+  test::expectInputError(
+      [&] {
+        checkSynergyModelFitsHand(model, {"a", "b"}, "m.yaml");
+      },
+      "m.yaml", "own_axis_joints", "listed twice");
 }
 
 }  // namespace
