@@ -3,10 +3,10 @@
 #include <charconv>
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {
@@ -200,9 +200,7 @@ double YamlField::number(const std::string& expected) const {
 double YamlField::positiveNumber(const std::string& expected) const {
   const double value = number(expected);
   if (!(value > 0.0)) {
-    std::ostringstream shown;
-    shown << value;
-    fail("expected " + expected + ", got " + shown.str());
+    fail("expected " + expected + ", got " + messageNumberText(value));
   }
   return value;
 }
