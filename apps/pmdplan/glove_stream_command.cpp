@@ -20,7 +20,6 @@
 #include "pmdplan/glove/glove_csv.hpp"
 #include "pmdplan/glove/glove_live_source.hpp"
 #include "pmdplan/glove/glove_serial_stream.hpp"
-#include "pmdplan/glove/number_text.hpp"
 #include "pmdplan/io/files/live_csv_file.hpp"
 #include "pmdplan/io/servers/event_stream_server.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
@@ -29,6 +28,7 @@
 #include "pmdplan/synergy/hand_mapping_file.hpp"
 #include "pmdplan/synergy/pmd_posture_filter.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/text/number_text.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan::cli {

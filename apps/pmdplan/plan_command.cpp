@@ -21,6 +21,7 @@
 #include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 #include "pmdplan/planning/task_planning.hpp"
+#include "pmdplan/synergy/hand_fit.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
 #include "trajectory_output.hpp"
@@ -64,7 +65,8 @@ int run(const Options& o) {
   if (!o.csv.empty()) checkOutputPath(o.csv, "--csv", {task.file, o.synergies, output});
   const auto checkerKind = parseCheckerKind(o.checker);
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
-  planningSpaceFromRobot(*task.robot);  // a robot without groups is told how to get them before anything else
+  const PlanningSpace space =
+      planningSpaceFromRobot(*task.robot);  // a robot without groups is told how to get them before anything else
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
   // The goal may grasp the target (planTask checks it and refuses other contact).
   if (const auto report = checking.exact().check(task.start); !report.free())
@@ -74,7 +76,12 @@ int run(const Options& o) {
                                                 ? shippedSynergyModelPath(task.robot->name())
                                                 : std::filesystem::path(o.synergies);
   std::optional<SynergyModel> synergies;
-  if (*mode == HandSamplingMode::Synergy) synergies = loadSynergyModel(synergyFile);
+  if (*mode == HandSamplingMode::Synergy) {
+    synergies = loadSynergyModel(synergyFile);
+    std::vector<std::string> handJoints;
+    for (const int i : space.handIndices) handJoints.push_back(space.joints[static_cast<std::size_t>(i)].name);
+    checkSynergyModelFitsHand(*synergies, handJoints, synergyFile.string());
+  }
   TaskPlanningOptions options;
   options.algorithm = planner->algorithm;
   options.mode = *mode;
@@ -89,18 +96,12 @@ int run(const Options& o) {
     throw InputError("", "--" + e.field(), e.message());
   }
   ProgressLine progress("planning " + task.name);
-  TaskPlanningResult result;
-  try {
-    result = planTask(task, checking, options, [&](const PlannerProgress& p) {
-      char status[160];
-      std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep,
-                    p.armHalfSize, p.samples, p.roadmapNodes, p.elapsedSeconds);
-      progress.update(p.elapsedSeconds, parameters.timeLimit, status);
-    });
-  } catch (const InputError& e) {
-    if (!e.file().empty() || e.field().rfind("--", 0) == 0) throw;
-    throw InputError(synergyFile.string(), e.field(), e.message());  // the sampler names the model's field
-  }
+  const TaskPlanningResult result = planTask(task, checking, options, [&](const PlannerProgress& p) {
+    char status[160];
+    std::snprintf(status, sizeof status, "sweep %zu rho_a %.4f  %zu samples  %zu nodes  %.1f s", p.sweep, p.armHalfSize,
+                  p.samples, p.roadmapNodes, p.elapsedSeconds);
+    progress.update(p.elapsedSeconds, parameters.timeLimit, status);
+  });
   progress.finish();
   const PlannerStatus status = result.status;
   const auto& stats = result.statistics;
@@ -165,7 +166,9 @@ const CommandRegistrar registrar{
                      "Step of the pre-grasp search, a fraction of the way to the open hand");
       app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
       app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
-      app.add_flag("--json", o->json, "Print the statistics as JSON");
+      std::string keys;
+      for (const char* key : statisticsJsonKeys()) keys += (keys.empty() ? "" : ", ") + std::string(key);
+      app.add_flag("--json", o->json, "Print the statistics as JSON (keys: " + keys + ")");
       app.add_option("--trajectory", o->trajectory,
                      "Also write the time-optimal trajectory (default TASK.trajectory.json) and its CSV")
           ->expected(0, 1);

@@ -20,10 +20,10 @@
 #include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/io/files/statistics_json.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
-#include "pmdplan/io/viewer/synergy_readout.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/synergy/synergy_readout.hpp"
 
 namespace pmdplan::python {
 namespace {

@@ -9,10 +9,10 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/viewer/synergy_readout.hpp"
 #include "pmdplan/synergy/synergy_fit.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/synergy/synergy_projection.hpp"
+#include "pmdplan/synergy/synergy_readout.hpp"
 
 namespace pmdplan::python {
 namespace {

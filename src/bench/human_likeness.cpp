@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "pmdplan/bench/human_likeness_independent.hpp"
-#include "pmdplan/io/viewer/synergy_readout.hpp"
+#include "pmdplan/synergy/synergy_readout.hpp"
 
 namespace pmdplan {
 namespace {

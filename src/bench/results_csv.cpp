@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "pmdplan/text/csv_field.hpp"
+
 namespace pmdplan {
 namespace {
 
@@ -9,13 +11,6 @@ std::string number(double value) {
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
-}
-
-std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 }  // namespace

@@ -1,98 +1,175 @@
 #include "pmdplan/bench/run_record.hpp"
 
-#include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <map>
+#include <functional>
+#include <string_view>
 #include <vector>
 
 namespace pmdplan {
 namespace {
 
-// Fields are separated by a tab; text fields have tabs, newlines and backslashes escaped.
-constexpr char kSeparator = '\t';
+using Json = nlohmann::ordered_json;
 
-std::string escapedText(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '\\')
-      out += "\\\\";
-    else if (c == '\t')
-      out += "\\t";
-    else if (c == '\n')
-      out += "\\n";
-    else if (c == '\r')
-      out += "\\r";
-    else
-      out += c;
+// Numbers keep every bit: nlohmann writes the shortest text that reads back to the same double;
+// a non-finite one (JSON has none) is the string "inf", "-inf" or "nan".
+Json toJson(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return value;
+}
+bool fromJson(const nlohmann::json& json, double& value) {
+  if (json.is_number()) {
+    value = json.get<double>();
+    return true;
   }
-  return out;
+  if (!json.is_string()) return false;
+  const auto& text = json.get_ref<const std::string&>();
+  if (text == "nan")
+    value = std::nan("");
+  else if (text == "inf")
+    value = HUGE_VAL;
+  else if (text == "-inf")
+    value = -HUGE_VAL;
+  else
+    return false;
+  return true;
 }
 
-std::optional<std::string> unescapedText(const std::string& text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '\\') {
-      out += text[i];
-      continue;
-    }
-    if (++i >= text.size()) return std::nullopt;
-    const char c = text[i];
-    if (c == '\\')
-      out += '\\';
-    else if (c == 't')
-      out += '\t';
-    else if (c == 'n')
-      out += '\n';
-    else if (c == 'r')
-      out += '\r';
-    else
-      return std::nullopt;
-  }
-  return out;
+Json toJson(const std::string& value) { return value; }
+bool fromJson(const nlohmann::json& json, std::string& value) {
+  if (!json.is_string()) return false;
+  value = json.get<std::string>();
+  return true;
 }
 
-std::string number(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
+Json toJson(bool value) { return value; }
+bool fromJson(const nlohmann::json& json, bool& value) {
+  if (!json.is_boolean()) return false;
+  value = json.get<bool>();
+  return true;
 }
 
-template <typename T>
-std::string number(T value) {
-  return std::to_string(value);
+Json toJson(int value) { return value; }
+bool fromJson(const nlohmann::json& json, int& value) {
+  if (!json.is_number_integer()) return false;
+  const auto wide = json.get<long long>();
+  value = static_cast<int>(wide);
+  return wide == value;
 }
 
-template <typename T>
-bool parse(const std::string& text, T& value) {
-  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
-  return result.ec == std::errc() && result.ptr == text.data() + text.size();
+template <typename T, std::enable_if_t<std::is_unsigned_v<T> && !std::is_same_v<T, bool>, int> = 0>
+Json toJson(T value) {
+  return value;
+}
+template <typename T, std::enable_if_t<std::is_unsigned_v<T> && !std::is_same_v<T, bool>, int> = 0>
+bool fromJson(const nlohmann::json& json, T& value) {
+  if (!json.is_number_unsigned()) return false;
+  value = json.get<T>();
+  return true;
 }
 
-bool parseDimensionCounts(const std::string& text, std::map<int, std::size_t>& counts) {
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, end - start);
-    const std::size_t colon = item.find(':');
-    int dimension = 0;
+/// Sampled nodes by hand dimension: {"2": 7, "3": 0}.
+Json toJson(const std::map<int, std::size_t>& counts) {
+  Json json = Json::object();
+  for (const auto& [dimension, nodes] : counts) json[std::to_string(dimension)] = nodes;
+  return json;
+}
+bool fromJson(const nlohmann::json& json, std::map<int, std::size_t>& counts) {
+  if (!json.is_object()) return false;
+  for (auto item = json.begin(); item != json.end(); ++item) {
+    const std::string& key = item.key();
+    if (key.empty() || key.size() > 4 || key.find_first_not_of("0123456789") != std::string::npos) return false;
     std::size_t nodes = 0;
-    if (colon == std::string::npos || !parse(item.substr(0, colon), dimension) ||
-        !parse(item.substr(colon + 1), nodes) || !counts.emplace(dimension, nodes).second)
-      return false;
-    start = end + 1;
+    if (!fromJson(item.value(), nodes)) return false;
+    counts[std::stoi(key)] = nodes;
   }
   return true;
 }
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> fields(1);
-  for (const char c : line) {
-    if (c == kSeparator)
-      fields.emplace_back();
-    else
-      fields.back() += c;
-  }
+/// One key of a record's JSON object and the member it holds.
+template <typename S>
+struct Field {
+  const char* key;
+  std::function<Json(const S&)> write;
+  std::function<bool(const nlohmann::json&, S&)> read;
+};
+
+template <typename S>
+const std::vector<Field<S>>& fieldsOf();
+
+/// An absent part (a run without a path has no human-likeness) is null.
+template <typename Part>
+Json toJson(const std::optional<Part>& part) {
+  if (!part) return nullptr;
+  Json json = Json::object();
+  for (const Field<Part>& f : fieldsOf<Part>()) json[f.key] = f.write(*part);
+  return json;
+}
+template <typename Part>
+bool fromJson(const nlohmann::json& json, std::optional<Part>& part) {
+  part.reset();
+  if (json.is_null()) return true;
+  if (!json.is_object() || json.size() != fieldsOf<Part>().size()) return false;
+  Part value;
+  for (const Field<Part>& f : fieldsOf<Part>())
+    if (!json.contains(f.key) || !f.read(json.at(f.key), value)) return false;
+  part = value;
+  return true;
+}
+
+template <typename S, typename T>
+Field<S> field(const char* key, T S::*member) {
+  return {key, [member](const S& s) { return toJson(s.*member); },
+          [member](const nlohmann::json& json, S& s) { return fromJson(json, s.*member); }};
+}
+
+template <>
+const std::vector<Field<IndependentHumanLikeness>>& fieldsOf() {
+  using I = IndependentHumanLikeness;
+  static const std::vector<Field<I>> fields = {
+      field("authors_subspace_distance_mean", &I::authorsSubspaceDistanceMean),
+      field("authors_subspace_distance_max", &I::authorsSubspaceDistanceMax),
+      field("joint_coupling", &I::jointCoupling),
+  };
+  return fields;
+}
+
+template <>
+const std::vector<Field<HumanLikeness>>& fieldsOf() {
+  using H = HumanLikeness;
+  static const std::vector<Field<H>> fields = {
+      field("subspace_distance_mean", &H::subspaceDistanceMean),
+      field("subspace_distance_max", &H::subspaceDistanceMax),
+      field("mahalanobis_mean", &H::mahalanobisMean),
+      field("independent", &H::independent),
+  };
+  return fields;
+}
+
+template <>
+const std::vector<Field<RunRecord>>& fieldsOf() {
+  using R = RunRecord;
+  static const std::vector<Field<R>> fields = {
+      field("task", &R::task),
+      field("planner", &R::planner),
+      field("run", &R::run),
+      field("seed", &R::seed),
+      field("solved", &R::solved),
+      field("valid", &R::valid),
+      field("planning_time_s", &R::planningTimeSeconds),
+      field("smoothing_time_s", &R::smoothingTimeSeconds),
+      field("samples", &R::samples),
+      field("arm_trials", &R::armTrials),
+      field("max_trials", &R::maxTrials),
+      field("final_rho_a", &R::finalArmHalfSize),
+      field("nodes_by_hand_dimension", &R::nodesByHandDimension),
+      field("roadmap_nodes", &R::roadmapNodes),
+      field("path_nodes", &R::pathNodes),
+      field("path_length", &R::pathLength),
+      field("collision_checks", &R::collisionChecks),
+      field("human_likeness", &R::humanLikeness),
+      field("failure", &R::failure),
+  };
   return fields;
 }
 
@@ -102,81 +179,45 @@ std::string nodesByHandDimensionText(const std::map<int, std::size_t>& counts) {
   std::string text;
   for (const auto& [dimension, nodes] : counts) {
     if (!text.empty()) text += ',';
-    text += number(dimension);
+    text += std::to_string(dimension);
     text += ':';
-    text += number(nodes);
+    text += std::to_string(nodes);
   }
   return text;
 }
 
-std::string encodeRunRecord(const RunRecord& r) {
-  std::vector<std::string> fields = {"run-record-2",
-                                     escapedText(r.task),
-                                     escapedText(r.planner),
-                                     number(r.run),
-                                     number(r.seed),
-                                     r.solved ? "1" : "0",
-                                     r.valid ? "1" : "0",
-                                     number(r.planningTimeSeconds),
-                                     number(r.smoothingTimeSeconds),
-                                     number(r.samples),
-                                     number(r.armTrials),
-                                     number(r.maxTrials),
-                                     number(r.finalArmHalfSize),
-                                     nodesByHandDimensionText(r.nodesByHandDimension),
-                                     number(r.roadmapNodes),
-                                     number(r.pathNodes),
-                                     number(r.pathLength),
-                                     number(r.collisionChecks),
-                                     r.humanLikeness ? "1" : "0",
-                                     number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMean : 0.0),
-                                     number(r.humanLikeness ? r.humanLikeness->subspaceDistanceMax : 0.0),
-                                     number(r.humanLikeness ? r.humanLikeness->mahalanobisMean : 0.0),
-                                     escapedText(r.failure)};
-  // The measures independent of the planner's model (last, so older fields keep their places).
-  const IndependentHumanLikeness* independent =
-      r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
-  fields.push_back(independent ? "1" : "0");
-  fields.push_back(number(independent ? independent->authorsSubspaceDistanceMean : 0.0));
-  fields.push_back(number(independent ? independent->authorsSubspaceDistanceMax : 0.0));
-  fields.push_back(number(independent ? independent->jointCoupling : 0.0));
-  std::string line;
-  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? std::string(1, kSeparator) : "") + fields[i];
-  return line;
+const std::vector<const char*>& runRecordKeys() {
+  static const std::vector<const char*> keys = [] {
+    std::vector<const char*> all;
+    for (const auto& f : fieldsOf<RunRecord>()) all.push_back(f.key);
+    return all;
+  }();
+  return keys;
+}
+
+nlohmann::ordered_json runRecordToJson(const RunRecord& record) {
+  Json json = Json::object();
+  for (const auto& f : fieldsOf<RunRecord>()) json[f.key] = f.write(record);
+  return json;
+}
+
+std::optional<RunRecord> runRecordFromJson(const nlohmann::json& json, std::size_t otherKeys) {
+  if (!json.is_object() || json.size() != fieldsOf<RunRecord>().size() + otherKeys) return std::nullopt;
+  RunRecord record;
+  for (const auto& f : fieldsOf<RunRecord>())
+    if (!json.contains(f.key) || !f.read(json.at(f.key), record)) return std::nullopt;
+  return record;
+}
+
+std::string encodeRunRecord(const RunRecord& record) {
+  // Text that is not UTF-8 (a failure message quoting a file) cannot be JSON as it is: replaced.
+  return runRecordToJson(record).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::optional<RunRecord> decodeRunRecord(const std::string& text) {
-  const auto f = split(text);
-  if (f.size() != 27 || f[0] != "run-record-2") return std::nullopt;
-  RunRecord r;
-  const auto task = unescapedText(f[1]), planner = unescapedText(f[2]), failure = unescapedText(f[22]);
-  if (!task || !planner || !failure) return std::nullopt;
-  r.task = *task;
-  r.planner = *planner;
-  r.failure = *failure;
-  const auto flag = [](const std::string& s, bool& value) {
-    if (s != "0" && s != "1") return false;
-    value = s == "1";
-    return true;
-  };
-  bool hasHumanLikeness = false;
-  HumanLikeness h;
-  const bool ok = parse(f[3], r.run) && parse(f[4], r.seed) && flag(f[5], r.solved) && flag(f[6], r.valid) &&
-                  parse(f[7], r.planningTimeSeconds) && parse(f[8], r.smoothingTimeSeconds) && parse(f[9], r.samples) &&
-                  parse(f[10], r.armTrials) && parse(f[11], r.maxTrials) && parse(f[12], r.finalArmHalfSize) &&
-                  parseDimensionCounts(f[13], r.nodesByHandDimension) && parse(f[14], r.roadmapNodes) &&
-                  parse(f[15], r.pathNodes) && parse(f[16], r.pathLength) && parse(f[17], r.collisionChecks) &&
-                  flag(f[18], hasHumanLikeness) && parse(f[19], h.subspaceDistanceMean) &&
-                  parse(f[20], h.subspaceDistanceMax) && parse(f[21], h.mahalanobisMean);
-  bool hasIndependent = false;
-  IndependentHumanLikeness independent;
-  const bool independentOk = flag(f[23], hasIndependent) && parse(f[24], independent.authorsSubspaceDistanceMean) &&
-                             parse(f[25], independent.authorsSubspaceDistanceMax) &&
-                             parse(f[26], independent.jointCoupling);
-  if (!ok || !independentOk) return std::nullopt;
-  if (hasIndependent) h.independent = independent;
-  if (hasHumanLikeness) r.humanLikeness = h;
-  return r;
+  const nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
+  if (json.is_discarded()) return std::nullopt;
+  return runRecordFromJson(json);
 }
 
 }  // namespace pmdplan

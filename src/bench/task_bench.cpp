@@ -1,8 +1,8 @@
 #include "pmdplan/bench/task_bench.hpp"
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/viewer/synergy_readout.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
+#include "pmdplan/synergy/synergy_readout.hpp"
 
 namespace pmdplan {
 

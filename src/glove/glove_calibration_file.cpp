@@ -2,8 +2,9 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/number_text.hpp"
-#include "pmdplan/glove/yaml_input.hpp"
+#include "pmdplan/text/number_text.hpp"
+#include "pmdplan/text/yaml_input.hpp"
+#include "pmdplan/text/yaml_writing.hpp"
 
 namespace pmdplan {
 namespace {
@@ -75,11 +76,9 @@ GloveCalibration loadGloveCalibration(const std::filesystem::path& path) {
 }
 
 std::string formatGloveCalibration(const GloveCalibration& calibration) {
-  std::string text =
-      "# CyberGlove calibration: angle [rad] = gain [rad/count] * raw + offset [rad]\n"
-      "# (+ gain [rad/count] * raw of `from` for each cross term).\n";
-  text += "format: " + std::string(kFormat) + "\nversion: 1\n";
-  text += "description: " + yaml_input::quoted(calibration.description) + "\n";
+  std::string text = yamlFileHeader({"CyberGlove calibration: angle [rad] = gain [rad/count] * raw + offset [rad]",
+                                     "(+ gain [rad/count] * raw of `from` for each cross term)."},
+                                    kFormat, "description", calibration.description);
   text += "sensors:\n";
   for (int s = 0; s < kCyberGloveSensorCount; ++s) {
     const SensorCalibration& sensor = calibration.sensors[static_cast<std::size_t>(s)];

@@ -8,7 +8,7 @@
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/glove_reply_scanner.hpp"
 #include "pmdplan/glove/glove_serial_device.hpp"
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/synergy/hand_fit.hpp"
 
 namespace pmdplan {
 namespace {
@@ -20,50 +21,16 @@ SynergyHandSampler::SynergyHandSampler(const PlanningSpace& space, const Synergy
   if (parameters.maxDirections < 1)
     reject("max_directions", "must be at least 1, got " + std::to_string(parameters.maxDirections));
 
-  const int n = model.jointCount();
-  if (n == 0) reject("joints", "the synergy model covers no joints");
-  std::vector<char> isHand(space.joints.size(), 0);
-  for (const int i : space.handIndices) isHand[static_cast<std::size_t>(i)] = 1;
-  std::vector<char> covered(space.joints.size(), 0);
+  std::vector<std::string> handJoints;
+  for (const int i : space.handIndices) handJoints.push_back(space.joints[static_cast<std::size_t>(i)].name);
+  checkSynergyModelFitsHand(model, handJoints, "");
   for (const JointLimit& joint : model.joints) {
     const int index = space.indexOf(joint.name);
-    if (index < 0 || isHand[static_cast<std::size_t>(index)] == 0)
-      reject("joints", "'" + joint.name + "' is not a hand joint of the robot");
-    if (covered[static_cast<std::size_t>(index)]++ != 0) reject("joints", "'" + joint.name + "' is listed twice");
-    if (!std::isfinite(joint.lower) || !std::isfinite(joint.upper) || !(joint.range() > 0.0))
-      reject("joints", "'" + joint.name + "' needs finite limits with lower < upper");
     configIndex_.push_back(index);
     modelLimits_.push_back(joint);
     robotLimits_.push_back(space.joints[static_cast<std::size_t>(index)]);
   }
-  for (const int i : space.handIndices)
-    if (covered[static_cast<std::size_t>(i)] == 0)
-      reject("joints", "the robot's hand joint '" + space.joints[static_cast<std::size_t>(i)].name +
-                           "' is missing from the synergy model");
-
-  if (model.mean.size() != n)
-    reject("mean",
-           "has " + std::to_string(model.mean.size()) + " entries, expected one per joint (" + std::to_string(n) + ")");
-  if (!model.mean.allFinite()) reject("mean", "must hold finite numbers");
-  if (model.directions.rows() != n)
-    reject("directions", "have " + std::to_string(model.directions.rows()) + " rows, expected one per joint (" +
-                             std::to_string(n) + ")");
-  if (model.directions.cols() < 1) reject("directions", "the model has no principal motion direction");
-  if (!model.directions.allFinite()) reject("directions", "must hold finite numbers");
-  if (model.sigma.size() != model.directions.cols())
-    reject("sigma", "has " + std::to_string(model.sigma.size()) + " entries, expected one per direction (" +
-                        std::to_string(model.directions.cols()) + ")");
-  if (!model.sigma.allFinite() || (model.sigma.array() < 0.0).any()) reject("sigma", "must hold finite numbers >= 0");
-
-  for (const std::string& name : model.ownAxisJoints) {
-    const auto at = std::find_if(model.joints.begin(), model.joints.end(),
-                                 [&](const JointLimit& joint) { return joint.name == name; });
-    if (at == model.joints.end()) reject("own_axis_joints", "'" + name + "' is not one of the model's joints");
-    const int slot = static_cast<int>(at - model.joints.begin());
-    if (std::find(ownAxisSlots_.begin(), ownAxisSlots_.end(), slot) != ownAxisSlots_.end())
-      reject("own_axis_joints", "'" + name + "' is listed twice");
-    ownAxisSlots_.push_back(slot);
-  }
+  for (const std::string& name : model.ownAxisJoints) ownAxisSlots_.push_back(model.jointIndex(name));
 
   const Eigen::Index used = std::min<Eigen::Index>(parameters.maxDirections, model.directions.cols());
   mean_ = model.mean;

@@ -8,8 +8,8 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/number_text.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/cyberglove_sensors.hpp"
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {

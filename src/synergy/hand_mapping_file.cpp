@@ -4,8 +4,9 @@
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/cyberglove_sensors.hpp"
-#include "pmdplan/glove/number_text.hpp"
-#include "pmdplan/glove/yaml_input.hpp"
+#include "pmdplan/text/number_text.hpp"
+#include "pmdplan/text/yaml_input.hpp"
+#include "pmdplan/text/yaml_writing.hpp"
 
 namespace pmdplan {
 namespace {
@@ -75,10 +76,9 @@ HandMapping loadHandMapping(const std::filesystem::path& path) {
 
 std::string formatHandMapping(const HandMapping& mapping) {
   std::string text =
-      "# Glove sensors -> robot hand joints, angles in rad: joint = offset + sum of gain * sensor angle,\n"
-      "# or a constant; values beyond a joint limit are clamped (and counted).\n";
-  text += "format: " + std::string(kFormat) + "\nversion: 1\n";
-  text += "description: " + yaml_input::quoted(mapping.description) + "\n";
+      yamlFileHeader({"Glove sensors -> robot hand joints, angles in rad: joint = offset + sum of gain * sensor angle,",
+                      "or a constant; values beyond a joint limit are clamped (and counted)."},
+                     kFormat, "description", mapping.description);
   text += "joints:\n";
   for (const JointRule& rule : mapping.rules) {
     text += "  - {joint: " + rule.joint;

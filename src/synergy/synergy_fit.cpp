@@ -6,7 +6,7 @@
 
 #include "pinned_product_blocking.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {

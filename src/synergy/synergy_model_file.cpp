@@ -8,8 +8,9 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/number_text.hpp"
-#include "pmdplan/glove/yaml_input.hpp"
+#include "pmdplan/text/number_text.hpp"
+#include "pmdplan/text/yaml_input.hpp"
+#include "pmdplan/text/yaml_writing.hpp"
 
 namespace pmdplan {
 namespace {
@@ -207,12 +208,11 @@ SynergyModel loadSynergyModel(const std::filesystem::path& path) {
 
 std::string formatSynergyModel(const SynergyModel& model) {
   std::string text =
-      "# Principal motion directions of a robot hand (pmdplan synergy model). Joint limits in rad;\n"
-      "# mean, vectors and sigma in joint values normalised to [0, 1] by those limits. Own-axis joints\n"
-      "# are sampled over their whole range; along direction i the planner's box half-width is\n"
-      "# lambda_i = kappa * sigma_i.\n";
-  text += "format: " + std::string(kFormat) + "\nversion: 1\n";
-  text += "provenance: " + yaml_input::quoted(model.provenance) + "\n";
+      yamlFileHeader({"Principal motion directions of a robot hand (pmdplan synergy model). Joint limits in rad;",
+                      "mean, vectors and sigma in joint values normalised to [0, 1] by those limits. Own-axis joints",
+                      "are sampled over their whole range; along direction i the planner's box half-width is",
+                      "lambda_i = kappa * sigma_i."},
+                     kFormat, "provenance", model.provenance);
   text += "joints:\n";
   for (const JointLimit& joint : model.joints)
     text += "  - {name: " + joint.name + ", lower: " + exactNumberText(joint.lower) +

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/yaml_input.hpp"
+#include "pmdplan/text/yaml_input.hpp"
 
 namespace pmdplan {
 namespace {

@@ -3,17 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
+
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {
-
-std::string formatValue(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value;
-  return text.str();
-}
 
 std::string listNames(const std::vector<std::string>& names) {
   std::string joined;
@@ -69,10 +63,10 @@ std::vector<std::pair<int, double>> readValues(const YamlField& field, const Rob
     }
     const JointLimit& limit = limits[slot];
     const std::string range =
-        formatValue(limit.lower / toInternal) + " .. " + formatValue(limit.upper / toInternal) + " " + unit;
+        messageNumberText(limit.lower / toInternal) + " .. " + messageNumberText(limit.upper / toInternal) + " " + unit;
     double internal = value.number("a joint value in " + unit + " within " + range) * toInternal;
     if (internal < limit.lower - kJointLimitTolerance || internal > limit.upper + kJointLimitTolerance) {
-      value.fail(formatValue(internal / toInternal) + " " + unit + " is outside the joint limits " + range);
+      value.fail(messageNumberText(internal / toInternal) + " " + unit + " is outside the joint limits " + range);
     }
     // Degree values written at a limit convert to within rounding of it: keep them exactly on it,
     // so that normalised coordinates stay inside [0, 1].

@@ -6,7 +6,7 @@
 
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/model/robot_model.hpp"
-#include "yaml_field.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 
 namespace pmdplan {
 

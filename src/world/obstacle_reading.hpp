@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "pmdplan/text/yaml_field.hpp"
 #include "pmdplan/world/task.hpp"
-#include "yaml_field.hpp"
 
 namespace pmdplan {
 

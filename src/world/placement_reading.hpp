@@ -3,7 +3,7 @@
 // convention. Internal to world/.
 #include <Eigen/Geometry>
 
-#include "yaml_field.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 
 namespace pmdplan {
 

@@ -7,7 +7,7 @@
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/model/resource_path.hpp"
-#include "yaml_field.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 
 namespace pmdplan {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "bench/record_samples.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "support/input_error_matchers.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {
@@ -40,10 +41,36 @@ TEST(CampaignJournal, AnotherCampaignsFileOrAGarbledLineIsAnError) {
     ADD_FAILURE() << "accepted another campaign's journal";
   } catch (const InputError& error) {
     EXPECT_EQ(error.field(), "--journal");
-    EXPECT_EQ(error.file(), (dir.path() / "j" / "rank0.tsv").string());
+    EXPECT_EQ(error.file(), (dir.path() / "j" / "rank0.jsonl").string());
   }
-  std::ofstream(dir.path() / "j" / "rank0.tsv", std::ios::app) << "not a record\n";
-  EXPECT_THROW(CampaignJournal(dir.path() / "j", options, 0), InputError);
+  std::ofstream(dir.path() / "j" / "rank0.jsonl", std::ios::app) << "not a record\n";
+  test::expectInputError([&] { CampaignJournal(dir.path() / "j", options, 0); },
+                         (dir.path() / "j" / "rank0.jsonl").string(), "line 3", "expected one finished run");
+}
+
+TEST(CampaignJournal, LinesAreJsonObjectsOfTheJobAndItsRecord) {
+  test::TempDir dir;
+  BenchOptions options;
+  const RunRecord a = test::successfulRun("can_on_table", "pmd", 0, 0.25);
+  { CampaignJournal(dir.path() / "j", options, 0).append(7, a); }
+  std::ifstream in(dir.path() / "j" / "rank0.jsonl");
+  std::string header, line;
+  std::getline(in, header), std::getline(in, line);
+  EXPECT_EQ(header, CampaignJournal::header(options));
+  EXPECT_EQ(nlohmann::json::parse(header).at("pmdplan_bench_journal"), 1);
+  const nlohmann::json json = nlohmann::json::parse(line);
+  EXPECT_EQ(json.at("job"), 7);
+  EXPECT_EQ(json.at("task"), "can_on_table");
+  EXPECT_EQ(json.size(), runRecordKeys().size() + 1);
+}
+
+// A journal of the tab-separated format before JSON lines is refused naming the file and line 1.
+TEST(CampaignJournal, AnOldTabSeparatedJournalIsAnError) {
+  test::TempDir dir;
+  std::filesystem::create_directories(dir.path() / "j");
+  std::ofstream(dir.path() / "j" / "rank0.tsv") << "# pmdplan bench journal: tasks=can_on_table\n0\trun-record-2\n";
+  test::expectInputError([&] { CampaignJournal(dir.path() / "j", BenchOptions{}, 0); },
+                         (dir.path() / "j" / "rank0.tsv").string(), "line 1", "older pmdplan");
 }
 
 }  // namespace

@@ -92,10 +92,46 @@ TEST(RunRecord, RejectsTextThatIsNotARecord) {
   EXPECT_FALSE(decodeRunRecord("hello").has_value());
   std::string text = encodeRunRecord(solvedRecord());
   EXPECT_FALSE(decodeRunRecord(text + "\textra").has_value());
-  const auto firstNumber = text.find("\t3\t");
-  ASSERT_NE(firstNumber, std::string::npos);
-  text.replace(firstNumber, 3, "\tx\t");
-  EXPECT_FALSE(decodeRunRecord(text).has_value());
+  EXPECT_FALSE(decodeRunRecord("[1, 2]").has_value());
+  const auto run = text.find("\"run\":3,");
+  ASSERT_NE(run, std::string::npos) << text;
+  std::string wrongKind = text;
+  wrongKind.replace(run, 8, "\"run\":\"3\",");
+  EXPECT_FALSE(decodeRunRecord(wrongKind).has_value());
+  std::string unknownKey = text;
+  unknownKey.replace(run, 8, "\"runs\":3,");
+  EXPECT_FALSE(decodeRunRecord(unknownKey).has_value());
+  std::string missing = text;
+  missing.erase(run, 8);
+  EXPECT_FALSE(decodeRunRecord(missing).has_value());
+}
+
+TEST(RunRecord, IsOneJsonObjectWithTheKeysInTheirOrder) {
+  const nlohmann::json json = nlohmann::json::parse(encodeRunRecord(solvedRecord()));
+  ASSERT_TRUE(json.is_object());
+  EXPECT_EQ(json.size(), runRecordKeys().size());
+  const std::string text = encodeRunRecord(solvedRecord());
+  std::size_t previous = 0;
+  for (const char* key : runRecordKeys()) {
+    const std::size_t at = text.find("\"" + std::string(key) + "\":");
+    ASSERT_NE(at, std::string::npos) << key;
+    EXPECT_GE(at, previous) << key;
+    previous = at;
+  }
+  EXPECT_EQ(json.at("nodes_by_hand_dimension").dump(), R"({"2":7,"3":0,"5":12})");
+  EXPECT_EQ(json.at("human_likeness").at("independent").at("joint_coupling").get<double>(), -1.0 / 7.0);
+}
+
+TEST(RunRecord, NonFiniteNumbersComeBack) {
+  RunRecord r = solvedRecord();
+  r.planningTimeSeconds = HUGE_VAL;
+  r.pathLength = std::nan("");
+  r.humanLikeness->mahalanobisMean = -HUGE_VAL;
+  const auto back = decodeRunRecord(encodeRunRecord(r));
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->planningTimeSeconds, HUGE_VAL);
+  EXPECT_TRUE(std::isnan(back->pathLength));
+  EXPECT_EQ(back->humanLikeness->mahalanobisMean, -HUGE_VAL);
 }
 
 }  // namespace

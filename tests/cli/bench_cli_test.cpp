@@ -113,7 +113,7 @@ TEST(BenchCli, AJournalledCampaignResumesWhereItStopped) {
   const std::string campaign =
       "bench can_on_table --planners pmd --runs 3 --time-limit 20 --journal " + quoted(journal);
   ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(first)).exitCode, 0);
-  const std::string lines = contents(journal / "rank0.tsv");
+  const std::string lines = contents(journal / "rank0.jsonl");
   ASSERT_EQ(std::count(lines.begin(), lines.end(), '\n'), 4) << lines;  // the campaign's line, then 3 runs
   ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(again)).exitCode, 0);
   EXPECT_EQ(contents(again), contents(first)) << "every run came from the journal";
@@ -122,7 +122,7 @@ TEST(BenchCli, AJournalledCampaignResumesWhereItStopped) {
   std::istringstream in(lines);
   std::string header, run0, run1, run2;
   std::getline(in, header), std::getline(in, run0), std::getline(in, run1), std::getline(in, run2);
-  dir.write("journal/rank0.tsv", header + "\n" + run0 + "\n" + run2.substr(0, run2.size() / 2));
+  dir.write("journal/rank0.jsonl", header + "\n" + run0 + "\n" + run2.substr(0, run2.size() / 2));
   const auto resumed = dir.path() / "resumed.csv";
   ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(resumed)).exitCode, 0);
   EXPECT_EQ(withoutTimings(contents(resumed)), withoutTimings(contents(first)));
@@ -136,6 +136,14 @@ TEST(BenchCli, AJournalledCampaignResumesWhereItStopped) {
                  "belongs to another campaign");
 }
 
+// A journal folder of an older pmdplan (tab-separated rank files) is bad input naming the file and line.
+TEST(BenchCli, AnOldFormatJournalIsRefused) {
+  test::TempDir dir;
+  dir.write("journal/rank0.tsv", "# pmdplan bench journal: tasks=can_on_table\n0\trun-record-2\n");
+  expectBadInput("bench can_on_table --planners pmd --runs 1 --journal " + quoted(dir.path() / "journal"), "rank0.tsv",
+                 "line 1");
+}
+
 // --report writes the outputs of a journal's finished runs without running the others: the rows
 // are the journal's, the tables say how much is finished, and the journal is left as it was.
 TEST(BenchCli, AReportShowsAJournalsFinishedRunsAndRunsNothing) {
@@ -144,17 +152,17 @@ TEST(BenchCli, AReportShowsAJournalsFinishedRunsAndRunsNothing) {
   const std::string campaign =
       "bench can_on_table --planners pmd,full --runs 2 --time-limit 20 --journal " + quoted(journal);
   ASSERT_EQ(runCli(dir, campaign + " --csv " + quoted(full)).exitCode, 0);
-  std::istringstream in(contents(journal / "rank0.tsv"));
+  std::istringstream in(contents(journal / "rank0.jsonl"));
   std::string header, run0, run1, run2;
   std::getline(in, header), std::getline(in, run0), std::getline(in, run1), std::getline(in, run2);
-  dir.write("journal/rank0.tsv", header + "\n" + run0 + "\n" + run2 + "\n");  // pmd run 0 and full run 0
-  const std::string before = contents(journal / "rank0.tsv");
+  dir.write("journal/rank0.jsonl", header + "\n" + run0 + "\n" + run2 + "\n");  // pmd run 0 and full run 0
+  const std::string before = contents(journal / "rank0.jsonl");
 
   const auto csv = dir.path() / "part.csv", markdown = dir.path() / "part.md", plot = dir.path() / "part.svg";
   const auto result = runCli(
       dir, campaign + " --report --csv " + quoted(csv) + " --markdown " + quoted(markdown) + " --plot " + quoted(plot));
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  EXPECT_EQ(contents(journal / "rank0.tsv"), before) << "a report adds nothing to the journal";
+  EXPECT_EQ(contents(journal / "rank0.jsonl"), before) << "a report adds nothing to the journal";
   std::istringstream fullRows(contents(full));
   std::string fullHeader, pmd0, pmd1, full0, full1;
   std::getline(fullRows, fullHeader), std::getline(fullRows, pmd0), std::getline(fullRows, pmd1),

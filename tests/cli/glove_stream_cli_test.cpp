@@ -18,11 +18,11 @@
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
 #include "pmdplan/glove/glove_serial_stream.hpp"
-#include "pmdplan/glove/number_text.hpp"
 #include "pmdplan/model/robot_model.hpp"
 #include "pmdplan/synergy/hand_mapping_file.hpp"
 #include "pmdplan/synergy/pmd_posture_filter.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/text/number_text.hpp"
 #include "support/run_cli.hpp"
 
 namespace pmdplan {

@@ -1,11 +1,13 @@
 #pragma once
 // A campaign's finished runs kept on disk as they finish, so a long campaign that is stopped (a
 // crash, a killed session, a power cut) resumes where it stopped instead of starting over. The
-// journal is a folder; each rank appends to its own file `rank<R>.tsv`, one line per finished job
-// ("job index <TAB> encoded record", written with one append), under a first line that names the
-// campaign (tasks, planners, runs, seed, limits, checker, tolerance, synergy model). Reading takes
-// every rank file of the folder, so a campaign may resume with another number of ranks; a file of
-// another campaign is an error, a half-written last line (the run it belonged to) is run again.
+// journal is a folder; each rank appends to its own file `rank<R>.jsonl` of JSON lines, one per
+// finished job ({"job": index, then the keys of its run record, run_record.hpp}, written with one
+// append), under a first line that names the campaign (tasks, planners, runs, seed, limits,
+// checker, tolerance, synergy model). Reading takes every rank file of the folder, so a campaign
+// may resume with another number of ranks; a file of another campaign is an error, and so is a
+// journal of an older pmdplan (`rank<R>.tsv`); a half-written last line (the run it belonged to)
+// is run again.
 #include <cstddef>
 #include <filesystem>
 #include <map>

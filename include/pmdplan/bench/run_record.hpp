@@ -1,12 +1,15 @@
 #pragma once
 // One benchmark run of a planner on a task: what every output (CSV, Markdown, OMPL log, plot) is
-// made from. Records travel from the forked child that ran them, and between MPI ranks, as text
-// (encodeRunRecord / decodeRunRecord) that restores every number exactly.
+// made from. Records travel from the forked child that ran them, between MPI ranks and into the
+// campaign journal as one JSON object (encodeRunRecord / decodeRunRecord) that restores every
+// number exactly; one table in run_record.cpp lists its keys for writing and reading.
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pmdplan {
 
@@ -73,7 +76,15 @@ struct RunRecord {
 /// "2:5,3:4": sampled nodes by hand dimension; "" for none.
 std::string nodesByHandDimensionText(const std::map<int, std::size_t>& counts);
 
-/// One line of text (no newline inside) holding every field, numbers in their shortest exact form.
+/// The keys of a record's JSON object, in order: task, planner, run, seed, solved, valid,
+/// planning_time_s, ..., human_likeness ({subspace_distance_mean, ..., independent} or null), failure.
+const std::vector<const char*>& runRecordKeys();
+nlohmann::ordered_json runRecordToJson(const RunRecord& record);
+/// Inverse of runRecordToJson; std::nullopt unless `json` holds exactly the record's keys (and
+/// `otherKeys` more, which the caller reads) with values of their kind.
+std::optional<RunRecord> runRecordFromJson(const nlohmann::json& json, std::size_t otherKeys = 0);
+
+/// One line of JSON (no newline inside) holding every field, numbers in their shortest exact form.
 std::string encodeRunRecord(const RunRecord& record);
 /// Inverse of encodeRunRecord; std::nullopt if the text is not one.
 std::optional<RunRecord> decodeRunRecord(const std::string& text);

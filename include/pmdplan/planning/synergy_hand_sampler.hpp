@@ -13,7 +13,7 @@
 namespace pmdplan {
 
 struct SynergySamplingParameters {
-  /// lambda_i = kappa·sigma_i: the box half-width along PMD i in standard deviations (DESIGN: 2).
+  /// lambda_i = kappa·sigma_i: the box half-width along PMD i in standard deviations (default 2).
   double kappa = 2.0;
   /// Most PMDs ever used (the paper's runs needed thumb base + 4 PMDs); capped by the model's count.
   int maxDirections = 4;
@@ -21,9 +21,9 @@ struct SynergySamplingParameters {
 
 class SynergyHandSampler final : public HandSampler {
  public:
-  /// Throws InputError (no file; field "joints", "mean", "directions", "sigma", "own_axis_joints",
-  /// "kappa" or "max_directions") if the model does not cover exactly the space's hand joints, its
-  /// sizes disagree, or a parameter is out of range. The caller may re-throw naming the model file.
+  /// Throws InputError (no file; field "kappa" or "max_directions") if a parameter is out of range,
+  /// and checkSynergyModelFitsHand's error (synergy/hand_fit.hpp, no file) if the model does not fit
+  /// the space's hand.
   SynergyHandSampler(const PlanningSpace& space, const SynergyModel& model, SynergySamplingParameters parameters = {});
 
   /// Own-axis joints + 1 PMD: 2 for the SAH.

@@ -32,8 +32,8 @@ const nlohmann::json& requireArray(const nlohmann::json& value, const Place& pla
   return value;
 }
 
-void checkKeys(const nlohmann::json& object, const Place& place, std::initializer_list<const char*> allowed,
-               std::initializer_list<const char*> required) {
+void checkKeys(const nlohmann::json& object, const Place& place, const std::vector<const char*>& allowed,
+               const std::vector<const char*>& required) {
   for (auto item = object.begin(); item != object.end(); ++item) {
     const bool known =
         std::any_of(allowed.begin(), allowed.end(), [&](const char* name) { return item.key() == name; });

@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace pmdplan::json_reading {
 
@@ -24,8 +25,8 @@ nlohmann::json parseDocument(const std::string& text, const std::string& file);
 const nlohmann::json& requireObject(const nlohmann::json& value, const Place& place);
 const nlohmann::json& requireArray(const nlohmann::json& value, const Place& place);
 /// Every key of `object` must be in `allowed`, and every key of `required` present.
-void checkKeys(const nlohmann::json& object, const Place& place, std::initializer_list<const char*> allowed,
-               std::initializer_list<const char*> required);
+void checkKeys(const nlohmann::json& object, const Place& place, const std::vector<const char*>& allowed,
+               const std::vector<const char*>& required);
 /// The member `name`, which checkKeys has made sure exists.
 const nlohmann::json& member(const nlohmann::json& object, const char* name);
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {

@@ -4,23 +4,10 @@
 #include <stdexcept>
 
 #include "pmdplan/core/atomic_file.hpp"
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/csv_field.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
-namespace {
-
-std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + '"';
-}
-
-}  // namespace
-
 std::string formatPathCsv(const std::vector<std::string>& jointNames, const std::vector<Configuration>& points) {
   std::string out;
   for (std::size_t i = 0; i < jointNames.size(); ++i) {

@@ -3,31 +3,79 @@
 #include "json_reading.hpp"
 
 namespace pmdplan {
+namespace {
+
+using S = PlanningStatistics;
+
+/// One key of the statistics JSON; the table below is its only list (writing, reading, the help).
+struct StatisticsField {
+  enum class Kind { Status, Timing, Number, Count, ByDimension, CollisionChecks };
+  const char* key;
+  Kind kind;
+  double S::*number = nullptr;      ///< Timing and Number
+  std::size_t S::*count = nullptr;  ///< Count
+};
+
+using K = StatisticsField::Kind;
+const StatisticsField kFields[] = {
+    {"status", K::Status},
+    {"planning_time_s", K::Timing, &S::planningTime},
+    {"smoothing_time_s", K::Timing, &S::smoothingTime},
+    {"final_rho_a", K::Number, &S::finalArmHalfSize},
+    {"sweeps", K::Count, nullptr, &S::sweeps},
+    {"max_trials", K::Count, nullptr, &S::maxTrials},
+    {"samples", K::Count, nullptr, &S::samples},
+    {"arm_trials", K::Count, nullptr, &S::armTrials},
+    {"roadmap_nodes", K::Count, nullptr, &S::roadmapNodes},
+    {"roadmap_edges", K::Count, nullptr, &S::roadmapEdges},
+    {"nodes_by_hand_dimension", K::ByDimension},
+    {"path_nodes", K::Count, nullptr, &S::pathNodes},
+    {"path_nodes_before_smoothing", K::Count, nullptr, &S::pathNodesBeforeSmoothing},
+    {"path_length", K::Number, &S::pathLength},
+    {"path_length_before_smoothing", K::Number, &S::pathLengthBeforeSmoothing},
+    {"state_checks", K::Count, nullptr, &S::stateChecks},
+    {"motion_checks", K::Count, nullptr, &S::motionChecks},
+    {"collision_checks", K::CollisionChecks},
+};
+
+}  // namespace
+
+const std::vector<const char*>& statisticsJsonKeys() {
+  static const std::vector<const char*> keys = [] {
+    std::vector<const char*> all;
+    for (const StatisticsField& field : kFields) all.push_back(field.key);
+    return all;
+  }();
+  return keys;
+}
 
 nlohmann::ordered_json statisticsToJson(const PlanningStatistics& s, bool includeTimings) {
   nlohmann::ordered_json json;
-  json["status"] = plannerStatusName(s.status);
-  if (includeTimings) {
-    json["planning_time_s"] = s.planningTime;
-    json["smoothing_time_s"] = s.smoothingTime;
+  for (const StatisticsField& field : kFields) {
+    switch (field.kind) {
+      case K::Status:
+        json[field.key] = plannerStatusName(s.status);
+        break;
+      case K::Timing:
+        if (includeTimings) json[field.key] = s.*field.number;
+        break;
+      case K::Number:
+        json[field.key] = s.*field.number;
+        break;
+      case K::Count:
+        json[field.key] = s.*field.count;
+        break;
+      case K::ByDimension: {
+        nlohmann::ordered_json byDimension = nlohmann::ordered_json::object();
+        for (const auto& [dimension, count] : s.nodesByHandDimension) byDimension[std::to_string(dimension)] = count;
+        json[field.key] = byDimension;
+        break;
+      }
+      case K::CollisionChecks:
+        json[field.key] = s.collisionChecks();
+        break;
+    }
   }
-  json["final_rho_a"] = s.finalArmHalfSize;
-  json["sweeps"] = s.sweeps;
-  json["max_trials"] = s.maxTrials;
-  json["samples"] = s.samples;
-  json["arm_trials"] = s.armTrials;
-  json["roadmap_nodes"] = s.roadmapNodes;
-  json["roadmap_edges"] = s.roadmapEdges;
-  nlohmann::ordered_json byDimension = nlohmann::ordered_json::object();
-  for (const auto& [dimension, count] : s.nodesByHandDimension) byDimension[std::to_string(dimension)] = count;
-  json["nodes_by_hand_dimension"] = byDimension;
-  json["path_nodes"] = s.pathNodes;
-  json["path_nodes_before_smoothing"] = s.pathNodesBeforeSmoothing;
-  json["path_length"] = s.pathLength;
-  json["path_length_before_smoothing"] = s.pathLengthBeforeSmoothing;
-  json["state_checks"] = s.stateChecks;
-  json["motion_checks"] = s.motionChecks;
-  json["collision_checks"] = s.collisionChecks();
   return json;
 }
 
@@ -35,49 +83,47 @@ PlanningStatistics statisticsFromJson(const nlohmann::json& json, const std::str
   using namespace json_reading;
   const Place place{file, field};
   requireObject(json, place);
-  checkKeys(
-      json, place,
-      {"status", "planning_time_s", "smoothing_time_s", "final_rho_a", "sweeps", "max_trials", "samples", "arm_trials",
-       "roadmap_nodes", "roadmap_edges", "nodes_by_hand_dimension", "path_nodes", "path_nodes_before_smoothing",
-       "path_length", "path_length_before_smoothing", "state_checks", "motion_checks", "collision_checks"},
-      {"status", "final_rho_a", "sweeps", "max_trials", "samples", "arm_trials", "roadmap_nodes", "roadmap_edges",
-       "nodes_by_hand_dimension", "path_nodes", "path_nodes_before_smoothing", "path_length",
-       "path_length_before_smoothing", "state_checks", "motion_checks", "collision_checks"});
+  std::vector<const char*> required;
+  for (const StatisticsField& f : kFields)
+    if (f.kind != K::Timing) required.push_back(f.key);
+  checkKeys(json, place, statisticsJsonKeys(), required);
   PlanningStatistics s;
-  const auto count = [&](const char* key) { return readUnsigned(member(json, key), place.key(key)); };
-  const auto number = [&](const char* key) { return readFinite(member(json, key), place.key(key)); };
-
-  const std::string status = readString(member(json, "status"), place.key("status"));
-  const auto parsed = parsePlannerStatus(status);
-  if (!parsed)
-    place.key("status").fail("unknown status '" + status + "'; expected solved, time_limit, sample_limit, ...");
-  s.status = *parsed;
-  if (json.contains("planning_time_s")) s.planningTime = number("planning_time_s");
-  if (json.contains("smoothing_time_s")) s.smoothingTime = number("smoothing_time_s");
-  s.finalArmHalfSize = number("final_rho_a");
-  s.sweeps = count("sweeps");
-  s.maxTrials = count("max_trials");
-  s.samples = count("samples");
-  s.armTrials = count("arm_trials");
-  s.roadmapNodes = count("roadmap_nodes");
-  s.roadmapEdges = count("roadmap_edges");
-  const Place byDimensionPlace = place.key("nodes_by_hand_dimension");
-  const nlohmann::json& byDimension = requireObject(member(json, "nodes_by_hand_dimension"), byDimensionPlace);
-  for (auto item = byDimension.begin(); item != byDimension.end(); ++item) {
-    const std::string& key = item.key();
-    const bool digits = !key.empty() && key.size() <= 4 && key.find_first_not_of("0123456789") == std::string::npos;
-    if (!digits) byDimensionPlace.key(key).fail("expected a hand dimension (a whole number) as key");
-    s.nodesByHandDimension[std::stoi(key)] = readUnsigned(item.value(), byDimensionPlace.key(key));
+  for (const StatisticsField& f : kFields) {
+    const Place at = place.key(f.key);
+    switch (f.kind) {
+      case K::Status: {
+        const std::string status = readString(member(json, f.key), at);
+        const auto parsed = parsePlannerStatus(status);
+        if (!parsed) at.fail("unknown status '" + status + "'; expected solved, time_limit, sample_limit, ...");
+        s.status = *parsed;
+        break;
+      }
+      case K::Timing:
+        if (json.contains(f.key)) s.*f.number = readFinite(member(json, f.key), at);
+        break;
+      case K::Number:
+        s.*f.number = readFinite(member(json, f.key), at);
+        break;
+      case K::Count:
+        s.*f.count = readUnsigned(member(json, f.key), at);
+        break;
+      case K::ByDimension: {
+        const nlohmann::json& byDimension = requireObject(member(json, f.key), at);
+        for (auto item = byDimension.begin(); item != byDimension.end(); ++item) {
+          const std::string& key = item.key();
+          const bool digits =
+              !key.empty() && key.size() <= 4 && key.find_first_not_of("0123456789") == std::string::npos;
+          if (!digits) at.key(key).fail("expected a hand dimension (a whole number) as key");
+          s.nodesByHandDimension[std::stoi(key)] = readUnsigned(item.value(), at.key(key));
+        }
+        break;
+      }
+      case K::CollisionChecks:  // last: the two counts it sums are read
+        if (readUnsigned(member(json, f.key), at) != s.collisionChecks())
+          at.fail("must equal state_checks + motion_checks (" + std::to_string(s.collisionChecks()) + ")");
+        break;
+    }
   }
-  s.pathNodes = count("path_nodes");
-  s.pathNodesBeforeSmoothing = count("path_nodes_before_smoothing");
-  s.pathLength = number("path_length");
-  s.pathLengthBeforeSmoothing = number("path_length_before_smoothing");
-  s.stateChecks = count("state_checks");
-  s.motionChecks = count("motion_checks");
-  if (count("collision_checks") != s.collisionChecks())
-    place.key("collision_checks")
-        .fail("must equal state_checks + motion_checks (" + std::to_string(s.collisionChecks()) + ")");
   return s;
 }
 

@@ -6,8 +6,8 @@
 #include "json_reading.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/number_text.hpp"
 #include "pmdplan/io/files/json_text.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {

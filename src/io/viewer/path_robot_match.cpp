@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <map>
-#include <sstream>
 
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {
@@ -16,13 +16,6 @@ std::string joinNames(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
   return text;
-}
-
-std::string numberText(double value) {
-  std::ostringstream out;
-  out.precision(6);
-  out << value;
-  return out.str();
 }
 
 /// For each active joint of the robot, its column in the file; InputError if the sets differ.
@@ -61,10 +54,10 @@ void checkMimic(const PathFile& path, const RobotModel& robot, const std::string
     if (relation.source != want.source || std::abs(relation.multiplier - want.multiplier) > 1e-12 ||
         std::abs(relation.offset - want.offset) > 1e-12)
       throw InputError(file, field,
-                       "expected [\"" + want.source + "\", " + numberText(want.multiplier) + ", " +
-                           numberText(want.offset) + "] as in robot '" + robot.name() + "', found [\"" +
-                           relation.source + "\", " + numberText(relation.multiplier) + ", " +
-                           numberText(relation.offset) + "]");
+                       "expected [\"" + want.source + "\", " + messageNumberText(want.multiplier) + ", " +
+                           messageNumberText(want.offset) + "] as in robot '" + robot.name() + "', found [\"" +
+                           relation.source + "\", " + messageNumberText(relation.multiplier) + ", " +
+                           messageNumberText(relation.offset) + "]");
     expected.erase(found);
   }
   if (!expected.empty()) {
@@ -90,8 +83,8 @@ std::vector<Configuration> pathConfigurations(const PathFile& path, const RobotM
       const JointLimit& limit = limits[j];
       if (value < limit.lower - kLimitTolerance || value > limit.upper + kLimitTolerance)
         throw InputError(file, "points[" + std::to_string(i) + "].positions[" + std::to_string(columns[j]) + "]",
-                         limit.name + " = " + numberText(value) + " is outside its limits [" + numberText(limit.lower) +
-                             ", " + numberText(limit.upper) + "] (rad)");
+                         limit.name + " = " + messageNumberText(value) + " is outside its limits [" +
+                             messageNumberText(limit.lower) + ", " + messageNumberText(limit.upper) + "] (rad)");
       q[static_cast<Eigen::Index>(j)] = value;
     }
     configurations.push_back(std::move(q));

@@ -10,7 +10,7 @@
 #include "pmdplan/io/viewer/path_robot_match.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/io/viewer/state_clearance.hpp"
-#include "pmdplan/io/viewer/synergy_readout.hpp"
+#include "pmdplan/synergy/synergy_readout.hpp"
 
 namespace pmdplan {
 namespace {

@@ -1,15 +1,17 @@
 #pragma once
-// PlanningStatistics as JSON, for the path file and `pmdplan plan --json`. Keys (snake_case, in
-// this order): status, planning_time_s and smoothing_time_s (only with timings), final_rho_a,
-// sweeps, max_trials, samples, hand_arm_samples, roadmap_nodes, roadmap_edges,
-// nodes_by_hand_dimension ({"2": n, ...}), path_nodes, path_nodes_before_smoothing, path_length,
-// path_length_before_smoothing, state_checks, motion_checks, collision_checks.
+// PlanningStatistics as JSON, for the path file and `pmdplan plan --json`: one key per member
+// (snake_case, in the order of statisticsJsonKeys(); the timings only when asked for, the hand
+// dimensions as {"2": n, ...}, collision_checks = state_checks + motion_checks).
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "pmdplan/planning/planning_statistics.hpp"
 
 namespace pmdplan {
+
+/// Every key, in the order they are written: status, planning_time_s, smoothing_time_s, ...
+const std::vector<const char*>& statisticsJsonKeys();
 
 nlohmann::ordered_json statisticsToJson(const PlanningStatistics& statistics, bool includeTimings);
 

@@ -1,4 +1,4 @@
-#include "pmdplan/io/viewer/synergy_readout.hpp"
+#include "pmdplan/synergy/synergy_readout.hpp"
 
 #include <Eigen/QR>
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
 // Strict reading of one YAML node together with where it came from, so that every complaint can
-// name the file, the field path (`obstacles[2].cylinder.radius`) and the line. Internal to world/.
+// name the file, the field path (`obstacles[2].cylinder.radius`) and the line.
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
@@ -63,7 +63,12 @@ class YamlField {
 /// Joins a parent field path and a key: "" + "base" = "base", "base" + "xyz" = "base.xyz".
 std::string joinFieldPath(const std::string& parent, std::string_view key);
 
-/// Loads a YAML document, turning syntax errors into InputError(file, "line N, column M", ...).
-YAML::Node parseYamlDocument(const std::string& text, const std::string& file);
+/// The one way our YAML files are loaded: an InputError naming `file` for an empty text ("line 1"),
+/// a syntax error ("line N, column M"), a key given twice in any map (its field path and line) or
+/// a document that aliases make larger than pmdplan reads.
+YAML::Node parseYamlDocument(std::string_view text, const std::string& file);
+
+/// Throws unless no map below `root` repeats a key (parseYamlDocument calls it).
+void rejectRepeatedKeys(const YamlField& root);
 
 }  // namespace pmdplan

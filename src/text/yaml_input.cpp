@@ -1,53 +1,21 @@
-#include "pmdplan/glove/yaml_input.hpp"
+#include "pmdplan/text/yaml_input.hpp"
 
 #include <algorithm>
-#include <set>
 #include <vector>
 
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/number_text.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 
 namespace pmdplan::yaml_input {
 namespace {
 std::string where(const std::string& context) { return context.empty() ? "" : " (" + context + ")"; }
-constexpr std::size_t kMaxYamlNodes = 10'000'000;
-
-/// yaml-cpp keeps both entries of a repeated key and answers lookups with the first: refuse them.
-void rejectRepeatedKeys(const YAML::Node& node, const std::string& file) {
-  std::vector<YAML::Node> pending{node};
-  std::size_t visited = 0;
-  while (!pending.empty()) {
-    if (++visited > kMaxYamlNodes)  // aliases can repeat a subtree exponentially often
-      throw InputError(
-          file, "document",
-          "more than " + std::to_string(kMaxYamlNodes) + " values (through aliases?), the most pmdplan reads");
-    const YAML::Node current = pending.back();
-    pending.pop_back();
-    if (current.IsSequence())
-      for (const auto& item : current) pending.push_back(item);
-    if (!current.IsMap()) continue;
-    std::set<std::string> seen;
-    for (const auto& entry : current) {
-      if (entry.first.IsScalar() && !seen.insert(entry.first.Scalar()).second)
-        throw InputError(file, lineOf(entry.first),
-                         "key '" + entry.first.Scalar() + "' is given twice; each key may appear once");
-      pending.push_back(entry.second);
-    }
-  }
-}
 }  // namespace
 
 YAML::Node parseDocument(std::string_view text, const std::string& file) {
-  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    throw InputError(file, "line 1", "empty file; expected a YAML document");
-  try {
-    YAML::Node root = YAML::Load(std::string(text));
-    if (!root.IsMap()) throw InputError(file, "line 1", "expected a YAML map of keys at the top level");
-    rejectRepeatedKeys(root, file);
-    return root;
-  } catch (const YAML::Exception& e) {
-    throw InputError(file, "line " + std::to_string(e.mark.line + 1), "YAML syntax error: " + e.msg);
-  }
+  YAML::Node root = parseYamlDocument(text, file);
+  if (!root.IsMap()) throw InputError(file, "line 1", "expected a YAML map of keys at the top level");
+  return root;
 }
 
 std::string lineOf(const YAML::Node& node) {
@@ -113,29 +81,6 @@ void checkFormat(const YAML::Node& root, std::string_view expectedFormat, const 
     if (!version.IsScalar() || version.Scalar() != "1")
       throw InputError(file, lineOf(version) + " (version)", "unsupported version; expected 1");
   }
-}
-
-std::string quoted(std::string_view value) {
-  std::string out = "\"";
-  for (const char c : value) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out + "\"";
 }
 
 }  // namespace pmdplan::yaml_input

@@ -8,7 +8,10 @@
 
 namespace pmdplan::yaml_input {
 
-/// Parses one document; a syntax error becomes an InputError naming the line.
+// The node-by-node reading of the glove, synergy and joint-limit files, on the one YAML loader of
+// yaml_field.hpp (parseYamlDocument: empty files, syntax, repeated keys, alias bombs).
+
+/// parseYamlDocument, then a map at the top level.
 YAML::Node parseDocument(std::string_view text, const std::string& file);
 
 /// "line N" (1-based) of a node, for InputError's field.
@@ -31,8 +34,5 @@ bool boolean(const YAML::Node& node, const std::string& file, const std::string&
 
 /// `format:` and `version:` of our files: optional, but if present they must match.
 void checkFormat(const YAML::Node& root, std::string_view expectedFormat, const std::string& file);
-
-/// A double-quoted YAML string with the characters YAML needs escaped.
-std::string quoted(std::string_view value);
 
 }  // namespace pmdplan::yaml_input

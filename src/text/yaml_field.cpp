@@ -1,11 +1,12 @@
-#include "yaml_field.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <map>
-#include <sstream>
+#include <vector>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {
@@ -41,6 +42,31 @@ std::string describeNode(const YAML::Node& node) {
   }
 }
 
+constexpr std::size_t kMaxYamlNodes = 10'000'000;
+
+}  // namespace
+
+/// yaml-cpp keeps both entries of a repeated key and answers lookups with the first: every map of
+/// the document is read through mapEntries, which refuses them, naming the field path.
+void rejectRepeatedKeys(const YamlField& root) {
+  std::vector<YamlField> pending{root};
+  std::size_t visited = 0;
+  while (!pending.empty()) {
+    if (++visited > kMaxYamlNodes)  // aliases can repeat a subtree exponentially often
+      throw InputError(
+          root.file(), "document",
+          "more than " + std::to_string(kMaxYamlNodes) + " values (through aliases?), the most pmdplan reads");
+    const YamlField current = pending.back();
+    pending.pop_back();
+    if (current.node().IsSequence())
+      for (YamlField& item : current.elements("a list")) pending.push_back(std::move(item));
+    if (current.node().IsMap())
+      for (auto& entry : current.mapEntries("a map")) pending.push_back(std::move(entry.second));
+  }
+}
+
+namespace {
+
 std::string joinKeys(std::initializer_list<std::string_view> keys) {
   std::string joined;
   for (const auto key : keys) joined += (joined.empty() ? "" : ", ") + std::string(key);
@@ -53,14 +79,19 @@ std::string joinFieldPath(const std::string& parent, std::string_view key) {
   return parent.empty() ? std::string(key) : parent + "." + std::string(key);
 }
 
-YAML::Node parseYamlDocument(const std::string& text, const std::string& file) {
+YAML::Node parseYamlDocument(std::string_view text, const std::string& file) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    throw InputError(file, "line 1", "empty file; expected a YAML document");
+  YAML::Node root;
   try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& error) {
+    root = YAML::Load(std::string(text));
+  } catch (const YAML::Exception& error) {
     throw InputError(
         file, "line " + std::to_string(error.mark.line + 1) + ", column " + std::to_string(error.mark.column + 1),
         "YAML syntax error: " + error.msg);
   }
+  rejectRepeatedKeys(YamlField(file, root));
+  return root;
 }
 
 YamlField::YamlField(std::string file, YAML::Node root) : YamlField(std::move(file), "", root) {}
@@ -169,9 +200,7 @@ double YamlField::number(const std::string& expected) const {
 double YamlField::positiveNumber(const std::string& expected) const {
   const double value = number(expected);
   if (!(value > 0.0)) {
-    std::ostringstream shown;
-    shown << value;
-    fail("expected " + expected + ", got " + shown.str());
+    fail("expected " + expected + ", got " + messageNumberText(value));
   }
   return value;
 }

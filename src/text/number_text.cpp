@@ -1,4 +1,4 @@
-#include "pmdplan/glove/number_text.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 #include <charconv>
 #include <cmath>
