@@ -18,7 +18,8 @@ constexpr const char* kRobotForm =
 
 /// `robot:` names a built-in robot unless it looks like a path (has a directory part or ends in
 /// .urdf); a URDF path uses the SRDF of the same stem beside it when there is one.
-std::shared_ptr<const RobotModel> readRobot(const YamlField& field, const std::filesystem::path& taskDirectory) {
+std::shared_ptr<const RobotModel> readRobot(const YamlField& field, const std::filesystem::path& taskDirectory,
+                                            const BuiltInRobotLoader& loadBuiltInRobot) {
   const std::string written = field.text(kRobotForm);
   if (written.empty()) field.fail(std::string("expected ") + kRobotForm + ", got an empty string");
   const std::filesystem::path asPath = written;
@@ -42,7 +43,7 @@ std::shared_ptr<const RobotModel> readRobot(const YamlField& field, const std::f
   if (!std::filesystem::is_regular_file(builtIn, error)) {
     field.fail("unknown built-in robot '" + written + "' (no " + builtIn.string() + "); expected " + kRobotForm);
   }
-  return std::make_shared<const RobotModel>(RobotModel::loadBuiltIn(written));
+  return loadBuiltInRobot(written);
 }
 
 }  // namespace
@@ -55,6 +56,11 @@ const Obstacle* Task::findObstacle(const std::string& obstacleName) const {
 }
 
 Task loadTask(const std::filesystem::path& file) {
+  return loadTask(
+      file, [](const std::string& name) { return std::make_shared<const RobotModel>(RobotModel::loadBuiltIn(name)); });
+}
+
+Task loadTask(const std::filesystem::path& file, const BuiltInRobotLoader& loadBuiltInRobot) {
   const std::string fileName = file.string();
   const std::string text = readTextFile(file);
   const YamlField root(fileName, parseYamlDocument(text, fileName));
@@ -71,7 +77,7 @@ Task loadTask(const std::filesystem::path& file) {
   if (const auto description = root.optionalChild("description")) {
     task.description = description->text("a one-line description");
   }
-  task.robot = readRobot(root.child("robot", kRobotForm), taskDirectory);
+  task.robot = readRobot(root.child("robot", kRobotForm), taskDirectory, loadBuiltInRobot);
   if (const auto fixed = root.optionalChild("fixed")) {
     const auto held = readHeldJointValues(*fixed, *task.robot);
     task.robot = std::make_shared<const RobotModel>(task.robot->withHeldJoints(held, "fixed"));

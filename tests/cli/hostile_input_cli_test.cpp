@@ -121,6 +121,7 @@ TEST(HostileInput, ToleranceOutsideItsRangeIsRefusedBeforeAnyWork) {
   for (const std::string value : {"1e-20", "inf", "1e-12", "1e-300", "nan", "0", "1e6"}) {
     expectBadInput(dir, "check can_on_table --tolerance-mm " + value, {"--tolerance-mm", "0.01 to 100"});
     expectBadInput(dir, "plan can_on_table --time-limit 1 --tolerance-mm " + value, {"--tolerance-mm"});
+    expectBadInput(dir, "validate can_on_table never-read.path.json --tolerance-mm " + value, {"--tolerance-mm"});
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <numbers>
 
+#include "pmdplan/core/data_directory.hpp"
 #include "toy_task_files.hpp"
 
 namespace pmdplan {
@@ -208,6 +209,25 @@ TEST_F(TaskLoading, UrdfBesideItsSrdfUsesTheSrdf) {
 TEST_F(TaskLoading, LoadTaskByNameTakesAPath) {
   const auto path = folder.write("by_path.yaml", kValidToyTask);
   EXPECT_EQ(loadTaskByName(path.string()).name, "toy_task");
+}
+
+// A built-in robot comes from the caller's loader when one is given (one robot for many tasks);
+// a URDF path is still read from its file.
+TEST_F(TaskLoading, ABuiltInRobotComesFromTheGivenLoader) {
+  const auto builtIn = std::make_shared<const RobotModel>(RobotModel::loadBuiltIn("sah_tx90"));
+  int calls = 0;
+  const BuiltInRobotLoader loader = [&](const std::string& name) {
+    ++calls;
+    EXPECT_EQ(name, "sah_tx90");
+    return builtIn;
+  };
+  const auto scene = resolveTaskPath("can_on_table");
+  EXPECT_EQ(loadTask(scene, loader).robot, builtIn);
+  EXPECT_EQ(loadTask(scene, loader).robot, builtIn);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(loadTask(scene).robot->activeJointNames(), builtIn->activeJointNames());
+  EXPECT_EQ(loadTask(folder.write("task.yaml", kValidToyTask), loader).robot->name(), "toy");
+  EXPECT_EQ(calls, 2);
 }
 
 }  // namespace

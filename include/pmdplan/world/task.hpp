@@ -3,6 +3,7 @@
 // Read from the task YAML schema of data/scenes/*.yaml (see docs in README).
 #include <Eigen/Geometry>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,6 +48,14 @@ struct Task {
 /// same stem beside it if present). Degrees are converted at load; a value that misses a joint
 /// limit by at most 1e-9 rad is taken as the limit, anything further out is an error.
 Task loadTask(const std::filesystem::path& file);
+
+/// Gives the built-in robot of that name (data/robots/<name>/, known to exist) for a task.
+using BuiltInRobotLoader = std::function<std::shared_ptr<const RobotModel>(const std::string& name)>;
+
+/// As loadTask(file), with built-in robots from `loadBuiltInRobot` instead of loading each from its
+/// files (RobotModel::loadBuiltIn): for a caller that reads many tasks and keeps the robots it
+/// loaded once, as the task fuzzer does (fuzz/task_fuzzer.cpp).
+Task loadTask(const std::filesystem::path& file, const BuiltInRobotLoader& loadBuiltInRobot);
 
 /// A built-in task name (data/scenes/<name>.yaml) or a path.
 Task loadTaskByName(const std::string& nameOrPath);
