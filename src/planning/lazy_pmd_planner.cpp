@@ -1,22 +1,14 @@
 #include "pmdplan/planning/lazy_pmd_planner.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "pmdplan/planning/path_smoothing.hpp"
+#include "pmdplan/planning/hand_arm_draw.hpp"
+#include "pmdplan/planning/van_der_corput.hpp"
 
 namespace pmdplan {
 namespace {
-
-/// The base-2 radical inverse of n >= 1: 1/2, 1/4, 3/4, 1/8, 5/8, ... (never 0 or 1).
-double radicalInverse(std::size_t n) {
-  double value = 0.0;
-  for (double scale = 0.5; n != 0; n >>= 1, scale *= 0.5)
-    if ((n & 1u) != 0) value += scale;
-  return value;
-}
 
 Configuration interpolate(const Configuration& a, const Configuration& b, double t) { return a + t * (b - a); }
 
@@ -41,14 +33,7 @@ void LazyPmdPlanner::setStartAndGoal(Configuration start, Configuration goal) {
 void LazyPmdPlanner::setup() {
   parameters_.check();
   space_.check();
-  for (const auto& [q, which] : {std::pair{&start_, "start"}, std::pair{&goal_, "goal"}}) {
-    if (q->size() != space_.dof())
-      throw std::invalid_argument(std::string("LazyPmdPlanner: the ") + which + " has " + std::to_string(q->size()) +
-                                  " values, the space " + std::to_string(space_.dof()) +
-                                  " joints (setStartAndGoal first)");
-    if (!q->allFinite() || !space_.withinLimits(*q))
-      throw std::invalid_argument(std::string("LazyPmdPlanner: the ") + which + " is outside the joint limits");
-  }
+  checkStartAndGoal(space_, start_, goal_, "LazyPmdPlanner");
   armSampler_.emplace(space_, start_, goal_);
   radius_ = parameters_.lazy.radiusFactor * space_.distance(start_, goal_);
 }
@@ -65,12 +50,7 @@ PlannerStatus LazyPmdPlanner::solve() {
   setup();
   clear();
   random_.reseed(parameters_.seed);
-  began_ = Clock::now();
-  deadline_.reset();
-  if (std::isfinite(parameters_.timeLimit))
-    deadline_ =
-        began_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(parameters_.timeLimit));
-  motionChecksAtStart_ = motionValidator_.statesChecked();
+  run_.begin(parameters_.timeLimit, motionValidator_);
 
   statistics_.stateChecks += 2;
   if (!stateValidator_.isValid(start_)) return endRun(PlannerStatus::InvalidStart);
@@ -87,7 +67,7 @@ PlannerStatus LazyPmdPlanner::solve() {
     for (LazyPath candidate = roadmap_.shortestPath(start, goal); !candidate.nodes.empty();
          candidate = roadmap_.shortestPath(start, goal)) {
       if (certify(candidate)) return finish(candidate);
-      if (timeIsUp()) return endRun(PlannerStatus::TimeLimit);
+      if (run_.timeIsUp()) return endRun(PlannerStatus::TimeLimit);
     }
     std::optional<PlannerStatus> stop;
     // Where the arm boxes are centred on the segment: every round first at the goal and at the
@@ -96,51 +76,20 @@ PlannerStatus LazyPmdPlanner::solve() {
     // the segment at 1/2, 1/4, 3/4, 1/8, ...
     for (std::size_t i = 0; i < 4 + parameters_.lazy.batch && !stop; ++i) {
       if (i < 4)
-        sampleNode(i % 2 == 0 ? 1.0 : 0.0, i < 2 ? parameters_.initialArmHalfSize : rho, stop);
+        stop = sampleNode(i % 2 == 0 ? 1.0 : 0.0, i < 2 ? parameters_.initialArmHalfSize : rho);
       else
-        sampleNode(radicalInverse(++draws_), rho, stop);
+        stop = sampleNode(radicalInverse(++draws_), rho);
     }
     if (stop) return endRun(*stop);
     rho = std::min(rho * parameters_.lazy.armGrowth, 1.0);
   }
 }
 
-void LazyPmdPlanner::sampleNode(double step, double armHalfSize, std::optional<PlannerStatus>& stop) {
-  Configuration q = start_;
-  std::size_t trials = 0;
-  for (int j = 0; j < parameters_.armTrials; ++j) {
-    if (statistics_.samples >= parameters_.maxSamples || statistics_.armTrials >= parameters_.maxSamples) {
-      stop = PlannerStatus::SampleLimit;
-      return;
-    }
-    if (timeIsUp()) {
-      stop = PlannerStatus::TimeLimit;
-      return;
-    }
-    ++statistics_.armTrials;
-    if (!space_.armIndices.empty()) {
-      ++statistics_.stateChecks;
-      if (!armSampler_->sample(step, armHalfSize, random_, stateValidator_, q)) continue;
-    }
-    int dimension = handSampler_->initialDimension();
-    for (int h = 0; h < parameters_.handTrials; ++h) {
-      if (statistics_.samples >= parameters_.maxSamples) {
-        stop = PlannerStatus::SampleLimit;
-        return;
-      }
-      handSampler_->sample(dimension, random_, q);
-      ++statistics_.samples;
-      ++statistics_.stateChecks;
-      ++trials;
-      if (stateValidator_.isValid(q)) {
-        statistics_.maxTrials = std::max(statistics_.maxTrials, trials);
-        ++statistics_.nodesByHandDimension[dimension];
-        connect(roadmap_.addNode(q, space_.normalise(q)), step);
-        return;
-      }
-      dimension = std::min(dimension + 1, handSampler_->maxDimension());
-    }
-  }
+std::optional<PlannerStatus> LazyPmdPlanner::sampleNode(double step, double armHalfSize) {
+  const HandArmDraw draw = drawHandArm({space_, *armSampler_, *handSampler_, stateValidator_, parameters_}, step,
+                                       armHalfSize, start_, random_, run_, statistics_);
+  if (draw.sample) connect(roadmap_.addNode(*draw.sample, space_.normalise(*draw.sample)), step);
+  return draw.stop;
 }
 
 // Lazy edges to the nearest nodes within the radius; a sample of the start's (goal's) arm box is
@@ -191,28 +140,15 @@ bool LazyPmdPlanner::probe(LazyEdge& edge) {
 
 PlannerStatus LazyPmdPlanner::finish(const LazyPath& path) {
   for (const NodeIndex node : path.nodes) unsmoothedPath_.push_back(roadmap_.configuration(node));
-  statistics_.planningTime = elapsedSeconds();
-  const Clock::time_point smoothingBegan = Clock::now();
-  path_ = parameters_.smooth ? smoothPath(unsmoothedPath_, space_, motionValidator_) : unsmoothedPath_;
-  statistics_.smoothingTime = std::chrono::duration<double>(Clock::now() - smoothingBegan).count();
-  statistics_.pathNodesBeforeSmoothing = unsmoothedPath_.size();
-  statistics_.pathNodes = path_.size();
-  statistics_.pathLengthBeforeSmoothing = pathLength(unsmoothedPath_, space_);
-  statistics_.pathLength = pathLength(path_, space_);
+  path_ = run_.finishPath(unsmoothedPath_, space_, motionValidator_, parameters_.smooth, statistics_);
   return endRun(PlannerStatus::Solved);
 }
 
 PlannerStatus LazyPmdPlanner::endRun(PlannerStatus status) {
-  statistics_.status = status;
-  if (status != PlannerStatus::Solved) statistics_.planningTime = elapsedSeconds();
+  run_.end(status, motionValidator_, statistics_);
   statistics_.roadmapNodes = roadmap_.nodeCount();
   statistics_.roadmapEdges = roadmap_.edgeCount();
-  statistics_.motionChecks = motionValidator_.statesChecked() - motionChecksAtStart_;
   return status;
 }
-
-bool LazyPmdPlanner::timeIsUp() const { return deadline_ && Clock::now() >= *deadline_; }
-
-double LazyPmdPlanner::elapsedSeconds() const { return std::chrono::duration<double>(Clock::now() - began_).count(); }
 
 }  // namespace pmdplan

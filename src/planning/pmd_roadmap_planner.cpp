@@ -1,11 +1,10 @@
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "pmdplan/planning/path_smoothing.hpp"
+#include "pmdplan/planning/hand_arm_draw.hpp"
 #include "pmdplan/planning/roadmap_path_search.hpp"
 #include "pmdplan/planning/sample_connection.hpp"
 #include "pmdplan/planning/van_der_corput.hpp"
@@ -32,14 +31,7 @@ void PmdRoadmapPlanner::setStartAndGoal(Configuration start, Configuration goal)
 void PmdRoadmapPlanner::setup() {
   parameters_.check();
   space_.check();
-  for (const auto& [q, which] : {std::pair{&start_, "start"}, std::pair{&goal_, "goal"}}) {
-    if (q->size() != space_.dof())
-      throw std::invalid_argument(std::string("PmdRoadmapPlanner: the ") + which + " has " + std::to_string(q->size()) +
-                                  " values, the space " + std::to_string(space_.dof()) +
-                                  " joints (setStartAndGoal first)");
-    if (!q->allFinite() || !space_.withinLimits(*q))
-      throw std::invalid_argument(std::string("PmdRoadmapPlanner: the ") + which + " is outside the joint limits");
-  }
+  checkStartAndGoal(space_, start_, goal_, "PmdRoadmapPlanner");
   armSampler_.emplace(space_, start_, goal_);
   // FINDNEIGHBORS' threshold: the start-goal distance (times a factor, 1 in the paper), in the
   // same normalised full space as all other distances (docs/deviations.md).
@@ -93,55 +85,19 @@ PlannerStatus PmdRoadmapPlanner::solve() {
         ++visits;
         if (progress_)
           progress_({k, rho, i, maxsteps + 1, searchRange, statistics_.samples, roadmap_.nodeCount(),
-                     roadmap_.componentCount(), elapsedSeconds()});
-        const HypercubeOutcome outcome = sampleHypercube(step, rho);
-        if (outcome.stop) return endRun(*outcome.stop);
-        if (!outcome.node) continue;
+                     roadmap_.componentCount(), run_.elapsedSeconds()});
+        const HandArmDraw draw = drawHandArm({space_, *armSampler_, *handSampler_, stateValidator_, parameters_}, step,
+                                             rho, start_, random_, run_, statistics_);
+        if (draw.stop) return endRun(*draw.stop);
+        if (!draw.sample) continue;
         added = true;
-        connectSample(roadmap_, *outcome.node, rule, forcedNeighbour(step), motionValidator_);
+        connectSample(roadmap_, addNode(*draw.sample, step, draw.handDimension), rule, forcedNeighbour(step),
+                      motionValidator_);
         if (roadmap_.sameComponent(startNode_, goalNode_)) return findPath();
         searchRange = updateSearchRange(roadmap_, startNode_, goalNode_);
       }
     }
   }
-}
-
-// One hypercube B^a(step): up to n_A arm configurations (Algorithm 1, one trial each), each with up
-// to n_H hand configurations (Algorithm 2, one trial each), the hand dimension growing by one per
-// failed hand sample. A sample is one hand-arm draw (Table 2's count); N bounds the samples and,
-// so that an arm that never comes free cannot loop for ever, the arm trials too. N and the time
-// limit are checked before every draw.
-PmdRoadmapPlanner::HypercubeOutcome PmdRoadmapPlanner::sampleHypercube(double step, double armHalfSize) {
-  Configuration q = start_;
-  std::size_t trials = 0;
-  for (int j = 0; j < parameters_.armTrials; ++j) {
-    if (statistics_.samples >= parameters_.maxSamples || statistics_.armTrials >= parameters_.maxSamples)
-      return {std::nullopt, PlannerStatus::SampleLimit};
-    if (timeIsUp()) return {std::nullopt, PlannerStatus::TimeLimit};
-    ++statistics_.armTrials;
-    // A hand alone has no arm to sample (its segment has length 0: the hypercubes at 0 and 1
-    // only, which try c_ini and c_goal in turn).
-    if (!space_.armIndices.empty()) {
-      ++statistics_.stateChecks;
-      if (!armSampler_->sample(step, armHalfSize, random_, stateValidator_, q)) continue;
-    }
-    int dimSch = handSampler_->initialDimension();
-    for (int h = 0; h < parameters_.handTrials; ++h) {
-      if (statistics_.samples >= parameters_.maxSamples) return {std::nullopt, PlannerStatus::SampleLimit};
-      if (timeIsUp()) return {std::nullopt, PlannerStatus::TimeLimit};
-      handSampler_->sample(dimSch, random_, q);
-      ++statistics_.samples;
-      ++statistics_.stateChecks;
-      ++trials;
-      if (stateValidator_.isValid(q)) {
-        statistics_.maxTrials = std::max(statistics_.maxTrials, trials);
-        ++statistics_.nodesByHandDimension[dimSch];
-        return {addNode(q, step, dimSch), std::nullopt};
-      }
-      dimSch = std::min(dimSch + 1, handSampler_->maxDimension());
-    }
-  }
-  return {};
 }
 
 NodeIndex PmdRoadmapPlanner::addNode(const Configuration& q, double step, int handDimension) {
@@ -159,41 +115,21 @@ std::optional<NodeIndex> PmdRoadmapPlanner::forcedNeighbour(double step) const {
 PlannerStatus PmdRoadmapPlanner::findPath() {
   for (const NodeIndex node : findRoadmapPath(roadmap_, startNode_, goalNode_))
     unsmoothedPath_.push_back(roadmap_.node(node).configuration);
-  statistics_.planningTime = elapsedSeconds();
-  const Clock::time_point smoothingBegan = Clock::now();
-  path_ = parameters_.smooth ? smoothPath(unsmoothedPath_, space_, motionValidator_) : unsmoothedPath_;
-  statistics_.smoothingTime = std::chrono::duration<double>(Clock::now() - smoothingBegan).count();
-  statistics_.pathNodesBeforeSmoothing = unsmoothedPath_.size();
-  statistics_.pathNodes = path_.size();
-  statistics_.pathLengthBeforeSmoothing = pathLength(unsmoothedPath_, space_);
-  statistics_.pathLength = pathLength(path_, space_);
+  path_ = run_.finishPath(unsmoothedPath_, space_, motionValidator_, parameters_.smooth, statistics_);
   return endRun(PlannerStatus::Solved);
 }
 
 void PmdRoadmapPlanner::beginRun() {
   clear();
   random_.reseed(parameters_.seed);
-  began_ = Clock::now();
-  deadline_.reset();
-  if (std::isfinite(parameters_.timeLimit))
-    deadline_ =
-        began_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(parameters_.timeLimit));
-  motionChecksAtStart_ = motionValidator_.statesChecked();
+  run_.begin(parameters_.timeLimit, motionValidator_);
 }
 
 PlannerStatus PmdRoadmapPlanner::endRun(PlannerStatus status) {
-  statistics_.status = status;
-  if (status != PlannerStatus::Solved) statistics_.planningTime = elapsedSeconds();
+  run_.end(status, motionValidator_, statistics_);
   statistics_.roadmapNodes = roadmap_.nodeCount();
   statistics_.roadmapEdges = roadmap_.edgeCount();
-  statistics_.motionChecks = motionValidator_.statesChecked() - motionChecksAtStart_;
   return status;
-}
-
-bool PmdRoadmapPlanner::timeIsUp() const { return deadline_ && Clock::now() >= *deadline_; }
-
-double PmdRoadmapPlanner::elapsedSeconds() const {
-  return std::chrono::duration<double>(Clock::now() - began_).count();
 }
 
 }  // namespace pmdplan

@@ -32,14 +32,13 @@ double vanDerCorput(std::size_t index, std::size_t intervals) {
   if (index == 0) return 0.0;
   if (index == 1) return 1.0;
   // The radical inverse in base 2 of index-1 = 1, 2, 3, ...: 1/2, 1/4, 3/4, 1/8, ...
-  std::size_t n = index - 1;
+  return radicalInverse(index - 1);
+}
+
+double radicalInverse(std::size_t n) {
   double value = 0.0;
-  double digit = 0.5;
-  while (n != 0) {
+  for (double digit = 0.5; n != 0; n >>= 1, digit *= 0.5)
     if ((n & 1u) != 0) value += digit;
-    digit *= 0.5;
-    n >>= 1;
-  }
   return value;
 }
 

@@ -47,7 +47,8 @@ export function startLiveGlove(live, { robot, view, jointTable }) {
     } else if (!status.connected) {
       badge.textContent = 'LIVE · connecting…';
     } else {
-      const latency = status.latencyMs === null ? '–' : status.latencyMs.toFixed(1);
+      // Below the clocks' resolution (the page's and pmdplan's wall clocks) a latency is "< 0.1".
+      const latency = status.latencyMs === null ? '–' : status.latencyMs < 0.05 ? '< 0.1' : status.latencyMs.toFixed(1);
       badge.textContent = `● LIVE · ${status.fps.toFixed(1)} fps · latency ${latency} ms\n${live.source}`
         + (live.project_pmds === null ? '' : ` · first ${live.project_pmds} PMDs`);
     }
@@ -61,7 +62,9 @@ export function startLiveGlove(live, { robot, view, jointTable }) {
   const events = new EventSource(live.events);
   events.addEventListener('open', () => { status.connected = true; show(); });
   events.addEventListener('posture', (event) => {
-    const receivedMs = Date.now();
+    // Wall-clock milliseconds with a fraction, as pmdplan's read_ms (Date.now() has whole ones, which
+    // made sub-millisecond latencies negative).
+    const receivedMs = performance.timeOrigin + performance.now();
     const data = JSON.parse(event.data);
     if (data.positions.length !== live.hand_joints.length)
       throw new Error(`live posture ${data.frame} has ${data.positions.length} values for ${live.hand_joints.length} hand joints`);

@@ -8,7 +8,6 @@
 // edge is dropped and the search repeated; when no path is left, a new batch of samples is drawn
 // with rho_a grown. The first candidate is the straight segment from c_ini to c_goal.
 // Shaped like PmdRoadmapPlanner: construct, setStartAndGoal, solve, read path() and statistics().
-#include <chrono>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -22,6 +21,7 @@
 #include "pmdplan/planning/hand_sampler.hpp"
 #include "pmdplan/planning/lazy_roadmap.hpp"
 #include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_run.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
 
@@ -51,19 +51,15 @@ class LazyPmdPlanner {
   const LazyRoadmap& roadmap() const { return roadmap_; }
 
  private:
-  using Clock = std::chrono::steady_clock;
-
-  /// Draws up to n_A arms around the segment point at `step`, each with up to n_H hands; adds and
-  /// lazily connects the first free one. Sets `stop` when a limit is reached.
-  void sampleNode(double step, double armHalfSize, std::optional<PlannerStatus>& stop);
+  /// Draws up to n_A arms around the segment point at `step`, each with up to n_H hands
+  /// (drawHandArm); adds and lazily connects the first free one. A limit reached is returned.
+  std::optional<PlannerStatus> sampleNode(double step, double armHalfSize);
   void connect(NodeIndex node, double step);
   /// Checks the candidate's unknown edges; true if all are free, false once one is blocked.
   bool certify(const LazyPath& candidate);
   bool probe(LazyEdge& edge);
   PlannerStatus finish(const LazyPath& path);
   PlannerStatus endRun(PlannerStatus status);
-  bool timeIsUp() const;
-  double elapsedSeconds() const;
 
   PlanningSpace space_;
   StateValidator& stateValidator_;
@@ -82,9 +78,7 @@ class LazyPmdPlanner {
   std::vector<Configuration> path_;
   std::vector<Configuration> unsmoothedPath_;
   PlanningStatistics statistics_;
-  Clock::time_point began_{};
-  std::optional<Clock::time_point> deadline_;
-  std::size_t motionChecksAtStart_ = 0;
+  PlannerRun run_;
 };
 
 }  // namespace pmdplan

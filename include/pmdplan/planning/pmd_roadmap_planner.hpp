@@ -3,7 +3,6 @@
 // drawn around the start-goal arm segment, with hands from the PMD subspace (or, for the baseline,
 // the whole hand joint box), searched with A* and smoothed. Shaped like an OMPL planner:
 // construct, setStartAndGoal, solve, read path() and statistics(), clear.
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -17,6 +16,7 @@
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
 #include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_run.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
 #include "pmdplan/planning/roadmap.hpp"
@@ -71,22 +71,11 @@ class PmdRoadmapPlanner {
   const HandSampler& handSampler() const { return *handSampler_; }
 
  private:
-  using Clock = std::chrono::steady_clock;
-
-  /// What sampling one hypercube gave: a new node, nothing, or a reason to stop.
-  struct HypercubeOutcome {
-    std::optional<NodeIndex> node;
-    std::optional<PlannerStatus> stop;
-  };
-
-  HypercubeOutcome sampleHypercube(double step, double armHalfSize);
   NodeIndex addNode(const Configuration& q, double step, int handDimension);
   std::optional<NodeIndex> forcedNeighbour(double step) const;
   PlannerStatus findPath();
   void beginRun();
   PlannerStatus endRun(PlannerStatus status);
-  bool timeIsUp() const;
-  double elapsedSeconds() const;
 
   PlanningSpace space_;
   StateValidator& stateValidator_;
@@ -108,9 +97,7 @@ class PmdRoadmapPlanner {
   std::vector<Configuration> path_;
   std::vector<Configuration> unsmoothedPath_;
   PlanningStatistics statistics_;
-  Clock::time_point began_{};
-  std::optional<Clock::time_point> deadline_;
-  std::size_t motionChecksAtStart_ = 0;
+  PlannerRun run_;
 };
 
 }  // namespace pmdplan

@@ -15,4 +15,8 @@ std::size_t segmentIntervals(double length, double spacing);
 /// must be a power of two. Each multiple of 1/intervals appears exactly once.
 double vanDerCorput(std::size_t index, std::size_t intervals);
 
+/// The base-2 radical inverse of n: 0 for 0, then 1/2, 1/4, 3/4, 1/8, 5/8, ... (vanDerCorput's
+/// inner centres; also the lazy planner's segment points and edge probes).
+double radicalInverse(std::size_t n);
+
 }  // namespace pmdplan
