@@ -1,32 +1,118 @@
-// The batch screen (CheckerState::screenBatch): the geometric stages for kLanes configurations at once, on
-// lane vectors (lane_vector.hpp) as wide as the running CPU's: all eight lanes in one AVX-512
+// The batch screen (CheckerState::screenBatch): the geometric stages for kLanes configurations at
+// once, on lane vectors (lane_vector.hpp) as wide as the running CPU's: all eight lanes in one AVX-512
 // register, or two passes of four (AVX2), or four of two (SSE2). For every pair: the link bounds
 // (a whole subtree of links against an obstacle first); where those meet, the parts' bounding
-// spheres; where those meet, the parts themselves — capsules by their exact distance, boxes and
-// cylinders by separating axes (face normals and cylinder axes) and a segment-cylinder bound. Only
+// spheres; where those meet, the parts themselves by the kernel of their two kinds (one header a
+// pair: capsule_capsule.hpp, capsule_box.hpp, ..., cylinder_cylinder.hpp; chosen at setup). Only
 // a lane whose pair none of these proves apart goes on, alone, to the one-configuration tests
 // (linkPairContact / linkObstacleContact, then FCL).
 #include <algorithm>
 #include <limits>
 
+#include "box_box.hpp"
+#include "box_cylinder.hpp"
+#include "capsule_box.hpp"
 #include "capsule_capsule.hpp"
+#include "capsule_cylinder.hpp"
 #include "checker_state.hpp"
+#include "cylinder_cylinder.hpp"
 #include "lane_parts.hpp"
-#include "solid_gap.hpp"
-#include "sphere_obstacle.hpp"
+#include "sphere_box.hpp"
+#include "sphere_capsule.hpp"
+#include "sphere_cylinder.hpp"
 
 namespace pmdplan::fast {
 namespace {
 
 constexpr int kValues = BatchedForwardKinematics::kPoseValues;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+using PairKind = CheckerState::PartPairKind;
+
+/// The kernel of part pairs of kind K other than two capsules: a lower bound on the gap between
+/// the placed parts a and b.
+template <PairKind K, class V>
+[[gnu::always_inline]] inline V solidPairGap(const ConvexPart& sa, const double* a, const ConvexPart& sb,
+                                             const double* b, double band, bool tight) {
+  if constexpr (K == PairKind::CapsuleBox)
+    return capsuleBoxGap<V>(sa, a, sb, b);
+  else if constexpr (K == PairKind::CapsuleCylinder)
+    return capsuleCylinderGap<V>(sa, a, sb, b, band, tight);
+  else if constexpr (K == PairKind::BoxBox)
+    return boxBoxGap<V>(sa, a, sb, b, band, tight);
+  else if constexpr (K == PairKind::BoxCylinder || K == PairKind::CylinderBox)
+    return boxCylinderGap<K == PairKind::CylinderBox, V>(sa, a, sb, b, band, tight);
+  else
+    return cylinderCylinderGap<V>(sa, a, sb, b, band, tight);
+}
+
+/// The gaps of the part pairs of kind K whose bounding spheres meet (the first `count` of
+/// partWork_'s list for K), by K's kernel, in lanes first .. first + width(V) - 1: into
+/// partPairGaps_, over the bounding spheres' gap there (two capsules' replaces it; it is exact).
+template <PairKind K, class V>
+[[gnu::always_inline]] inline void partPairGaps(CheckerState& state, std::uint32_t count, int first, bool tight) {
+  const std::uint32_t* work = state.partWork_.data() + state.partWorkBegin_[static_cast<int>(K)];
+  const double* placed = state.partLanes_.data() + first;
+  for (std::uint32_t w = 0; w < count; ++w) {
+    const std::uint32_t k = work[w];
+    const CheckerState::PartPair& pp = state.partPairs_[k];
+    const ConvexPart &sa = state.partShapes_[pp.indexA], &sb = state.partShapes_[pp.indexB];
+    const double* a = placed + static_cast<std::size_t>(pp.indexA) * kPartValues * L;
+    const double* b = placed + static_cast<std::size_t>(pp.indexB) * kPartValues * L;
+    double* g = state.partPairGaps_.data() + first + static_cast<std::size_t>(k) * L;
+    if constexpr (K == PairKind::CapsuleCapsule)
+      lanes::store(g, capsuleCapsuleGap<V>(sa, a, pp.inverseA, sb, b, pp.inverseB));
+    else
+      lanes::store(g, lanes::max(lanes::load<V>(g), solidPairGap<K, V>(sa, a, sb, b, state.band_, tight)));
+  }
+}
+
+/// The sphere kernel for an obstacle of kind K.
+template <ConvexPart::Kind K, class V>
+[[gnu::always_inline]] inline V sphereGap(const ConvexPart& obstacle, const Point<V>& c, V r) {
+  if constexpr (K == ConvexPart::Kind::Capsule)
+    return sphereCapsuleGap(obstacle, c, r);
+  else if constexpr (K == ConvexPart::Kind::Box)
+    return sphereBoxGap(obstacle, c, r);
+  else
+    return sphereCylinderGap(obstacle, c, r);
+}
 
 }  // namespace
 
+// Obstacle o (of kind K) against every moving link's bound, a whole subtree at a time where its
+// sphere is clear of the obstacle: the sphere around a link's bound centre that holds its
+// descendants' bounds (subtreeLanes_, radius grown by a relative 1e-12 against rounding).
+template <ConvexPart::Kind K, class V>
+[[gnu::always_inline]] inline void CheckerState::screenObstacleOf(std::size_t o, int first, bool tight) {
+  using lanes::load;
+  using lanes::store;
+  const std::size_t selfCount = selfPairs_.size(), linkCount = geometricLinks_.size();
+  const ConvexPart& obstacle = obstacles_[o].part;
+  const double* subtree = subtreeLanes_.data() + first;
+  double* obstacleGaps = pairLaneGaps_.data() + first + (selfCount + o * linkCount) * L;
+  char* obstacleNear = pairNear_.data() + selfCount + o * linkCount;
+  for (std::size_t i = 0; i < linkCount;) {
+    const auto end = static_cast<std::size_t>(geometricSubtreeEnd_[i]);
+    const Point<V> centre =
+        pointAt<V>(boundLanes_.data() + static_cast<std::size_t>(geometricLinks_[i]) * 3 * L + first);
+    if (!tight && end > i + 1) {
+      const V whole = sphereGap<K>(obstacle, centre, load<V>(subtree + i * L) * (1.0 + 1e-12));
+      if (!(lanes::lowest(whole) <= band_)) {
+        for (; i < end; ++i) store(obstacleGaps + i * L, whole), obstacleNear[i] = 0;
+        continue;
+      }
+    }
+    const V gap = sphereGap<K>(obstacle, centre, lanes::splat<V>(geometricBoundR_[i]));
+    store(obstacleGaps + i * L, gap);
+    obstacleNear[i] = lanes::lowest(gap) <= band_;
+    ++i;
+  }
+}
+
 // Lanes first .. first + width(V) - 1, in passes that keep the data-dependent branches out of the
 // long loops: (1) every pair's bounds; (2) for the pairs whose bounds meet in some lane, their links
-// placed, every part pair's bounding spheres, then where those meet the exact capsule distance or
-// the separating axes (each kind in one loop), then each pair's smallest part gap; (3) the safe
+// placed, every part pair's bounding spheres, then where those meet the kernel of the pair's kinds
+// (one loop per kind of pair, PartPairKind), then each pair's smallest part gap; (3) the safe
 // value. Leaves each pair's gap (a lower bound; +inf in a lane left open) in pairLaneGaps_, the
 // smallest gap * share in laneSafe_, and in laneScalar_ the pairs each lane must test alone. Lanes
 // from `count` on repeat the last configuration: they are computed, never reported.
@@ -84,9 +170,7 @@ template <class V>
     store(gaps + p * L, gap);
     pairNear_[p] = lanes::lowest(gap) <= band_;
   }
-  // Against the obstacles, a whole subtree at a time where its sphere is clear of the obstacle: the
-  // sphere around a link's bound centre that holds its descendants' bounds (radius grown by a
-  // relative 1e-12 against rounding).
+  // Against the obstacles: each obstacle's subtree radii first.
   double* subtree = subtreeLanes_.data() + first;
   for (std::size_t i = 0; i < linkCount; ++i) store(subtree + i * L, lanes::splat<V>(geometricBoundR_[i]));
   for (std::size_t i = linkCount; i-- > 0;) {
@@ -96,26 +180,17 @@ template <class V>
     double* r = subtree + static_cast<std::size_t>(parent) * L;
     store(r, lanes::max(load<V>(r), lanes::sqrt(lanes::dot(d, d)) + load<V>(subtree + i * L)));
   }
-  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
-    const ConvexPart& obstacle = obstacles_[o].part;
-    double* obstacleGaps = gaps + (selfCount + o * linkCount) * L;
-    char* obstacleNear = pairNear_.data() + selfCount + o * linkCount;
-    for (std::size_t i = 0; i < linkCount;) {
-      const auto end = static_cast<std::size_t>(geometricSubtreeEnd_[i]);
-      const Point<V> centre = bound(geometricLinks_[i]);
-      if (!tight && end > i + 1) {
-        const V whole = obstacleSphereGap(obstacle, centre, load<V>(subtree + i * L) * (1.0 + 1e-12));
-        if (!(lanes::lowest(whole) <= band_)) {
-          for (; i < end; ++i) store(obstacleGaps + i * L, whole), obstacleNear[i] = 0;
-          continue;
-        }
-      }
-      const V gap = obstacleSphereGap(obstacle, centre, lanes::splat<V>(geometricBoundR_[i]));
-      store(obstacleGaps + i * L, gap);
-      obstacleNear[i] = lanes::lowest(gap) <= band_;
-      ++i;
+  for (std::size_t o = 0; o < obstacles_.size(); ++o) switch (obstacles_[o].part.kind) {
+      case ConvexPart::Kind::Capsule:
+        screenObstacleOf<ConvexPart::Kind::Capsule, V>(o, first, tight);
+        break;
+      case ConvexPart::Kind::Box:
+        screenObstacleOf<ConvexPart::Kind::Box, V>(o, first, tight);
+        break;
+      case ConvexPart::Kind::Cylinder:
+        screenObstacleOf<ConvexPart::Kind::Cylinder, V>(o, first, tight);
+        break;
     }
-  }
 
   // (2) Parts.
   for (std::size_t pair = 0; pair < pairs; ++pair) {
@@ -127,7 +202,7 @@ template <class V>
       place(geometricLinks_[(pair - selfCount) % linkCount]);
     }
   }
-  std::size_t capsules = 0, faces = 0;
+  std::uint32_t counts[kPartPairKinds] = {};  // of partWork_'s lists
   for (std::size_t pair = 0; pair < pairs; ++pair) {
     if (!pairNear_[pair]) continue;
     for (std::uint32_t k = pairPartsBegin_[pair]; k < pairPartsBegin_[pair + 1]; ++k) {
@@ -137,26 +212,19 @@ template <class V>
                         (partShapes_[pp.indexA].boundRadius + partShapes_[pp.indexB].boundRadius);
       store(partGaps + static_cast<std::size_t>(k) * L, spheres);
       const bool meet = tight || lanes::lowest(spheres) <= band_;  // tight: every part pair measured
-      (pp.capsules ? capsuleWork_[capsules] : faceWork_[faces]) = k;
-      (pp.capsules ? capsules : faces) += meet;
+      const auto kind = static_cast<int>(pp.kind);
+      partWork_[partWorkBegin_[kind] + counts[kind]] = k;
+      counts[kind] += meet;
     }
   }
-  for (std::size_t w = 0; w < capsules; ++w) {
-    const std::uint32_t k = capsuleWork_[w];
-    const PartPair& pp = partPairs_[k];
-    const double *a = part(pp.indexA), *b = part(pp.indexB);
-    store(partGaps + static_cast<std::size_t>(k) * L,
-          lanes::segmentDistance(pointAt<V>(a), pointAt<V>(a + 3 * L), pointAt<V>(b), pointAt<V>(b + 3 * L),
-                                 pp.inverseA, pp.inverseB) -
-              (partShapes_[pp.indexA].radius + partShapes_[pp.indexB].radius));
-  }
-  for (std::size_t w = 0; w < faces; ++w) {
-    const std::uint32_t k = faceWork_[w];
-    const PartPair& pp = partPairs_[k];
-    double* g = partGaps + static_cast<std::size_t>(k) * L;
-    store(g, lanes::max(load<V>(g), solidGap<V>(partShapes_[pp.indexA], part(pp.indexA), partShapes_[pp.indexB],
-                                                part(pp.indexB), band_, tight)));
-  }
+  const auto at = [](PairKind kind) { return static_cast<int>(kind); };
+  partPairGaps<PairKind::CapsuleCapsule, V>(*this, counts[at(PairKind::CapsuleCapsule)], first, tight);
+  partPairGaps<PairKind::CapsuleBox, V>(*this, counts[at(PairKind::CapsuleBox)], first, tight);
+  partPairGaps<PairKind::CapsuleCylinder, V>(*this, counts[at(PairKind::CapsuleCylinder)], first, tight);
+  partPairGaps<PairKind::BoxBox, V>(*this, counts[at(PairKind::BoxBox)], first, tight);
+  partPairGaps<PairKind::BoxCylinder, V>(*this, counts[at(PairKind::BoxCylinder)], first, tight);
+  partPairGaps<PairKind::CylinderBox, V>(*this, counts[at(PairKind::CylinderBox)], first, tight);
+  partPairGaps<PairKind::CylinderCylinder, V>(*this, counts[at(PairKind::CylinderCylinder)], first, tight);
   for (std::size_t pair = 0; pair < pairs; ++pair) {
     if (!pairNear_[pair]) continue;
     V partsGap = lanes::splat<V>(kInfinity);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "capsule_capsule.hpp"
+#include "lane_geometry.hpp"
 #include "lane_parts.hpp"
 
 namespace pmdplan::fast {
@@ -222,10 +222,26 @@ void CheckerState::prepareLanes() {
   partShapes_.clear();
   for (const auto& link : links_) partShapes_.insert(partShapes_.end(), link.parts.begin(), link.parts.end());
   for (const auto& obstacle : obstacles_) partShapes_.push_back(obstacle.part);
+  // Each part pair with its kernel (checker_state.hpp, PartPairKind), counted by kind.
+  std::uint32_t kindCounts[kPartPairKinds] = {};
   const auto add = [&](std::uint32_t a, std::uint32_t b) {
-    const ConvexPart &pa = partShapes_[a], &pb = partShapes_[b];
-    partPairs_.push_back({a, b, pa.kind == ConvexPart::Kind::Capsule && pb.kind == ConvexPart::Kind::Capsule,
-                          lanes::inverseSquaredLength(pa.a, pa.b), lanes::inverseSquaredLength(pb.a, pb.b)});
+    using Kind = ConvexPart::Kind;
+    const Kind first = partShapes_[a].kind, second = partShapes_[b].kind;
+    PartPairKind kind;
+    if (first == second) {
+      kind = first == Kind::Capsule ? PartPairKind::CapsuleCapsule
+             : first == Kind::Box   ? PartPairKind::BoxBox
+                                    : PartPairKind::CylinderCylinder;
+    } else if (first == Kind::Capsule || second == Kind::Capsule) {
+      kind = first == Kind::Box || second == Kind::Box ? PartPairKind::CapsuleBox : PartPairKind::CapsuleCylinder;
+      if (second == Kind::Capsule) std::swap(a, b);
+    } else {
+      kind = first == Kind::Box ? PartPairKind::BoxCylinder : PartPairKind::CylinderBox;
+      if (first == Kind::Cylinder) std::swap(a, b);
+    }
+    ++kindCounts[static_cast<int>(kind)];
+    partPairs_.push_back({a, b, kind, lanes::inverseSquaredLength(partShapes_[a].a, partShapes_[a].b),
+                          lanes::inverseSquaredLength(partShapes_[b].a, partShapes_[b].b)});
   };
   const auto partsOf = [&](int link) {
     const auto first = static_cast<std::uint32_t>(partOffset_[static_cast<std::size_t>(link)]);
@@ -247,8 +263,8 @@ void CheckerState::prepareLanes() {
       pairPartsBegin_.push_back(static_cast<std::uint32_t>(partPairs_.size()));
     }
   partPairGaps_.assign(partPairs_.size() * L, 0.0);
-  capsuleWork_.assign(partPairs_.size(), 0);
-  faceWork_.assign(partPairs_.size(), 0);
+  partWork_.assign(partPairs_.size(), 0);
+  for (int k = 1; k < kPartPairKinds; ++k) partWorkBegin_[k] = partWorkBegin_[k - 1] + kindCounts[k - 1];
 }
 
 }  // namespace pmdplan::fast

@@ -80,6 +80,9 @@ struct CheckerState {
   void screenLanes(const double* poses, int count, bool tight);
   template <class V>
   void screenLanesOf(const double* poses, int count, int first, bool tight);
+  /// screenLanesOf's obstacle o, of kind K, against the links' (and subtrees') bounds.
+  template <ConvexPart::Kind K, class V>
+  void screenObstacleOf(std::size_t o, int first, bool tight);
 
   // Set up once (checker_state.cpp).
   void computeMotionWeights(const RobotModel& model);
@@ -146,15 +149,31 @@ struct CheckerState {
   /// Every pair's part pairs (pair p's from pairPartsBegin_[p] to pairPartsBegin_[p + 1]); part
   /// indices into partShapes_ and partLanes_.
   std::vector<ConvexPart> partShapes_;  ///< the link parts (in their links' frames), then the obstacles
+  /// The kernel of a part pair (one header each: capsule_capsule.hpp, capsule_box.hpp, ...),
+  /// chosen once at setup. A pair's parts are stored in the order of the kernel's name; a box and a
+  /// cylinder keep the order of their pair (CylinderBox: the cylinder came first, its axis is tried
+  /// first), as do two parts of one kind.
+  enum class PartPairKind : std::uint8_t {
+    CapsuleCapsule,
+    CapsuleBox,
+    CapsuleCylinder,
+    BoxBox,
+    BoxCylinder,
+    CylinderBox,
+    CylinderCylinder
+  };
+  static constexpr int kPartPairKinds = 7;
   struct PartPair {
     std::uint32_t indexA, indexB;
-    bool capsules;              ///< both capsules: their exact distance, else separating axes
+    PartPairKind kind;
     double inverseA, inverseB;  ///< capsules: 1 / their cores' squared lengths (0: a point)
   };
   std::vector<PartPair> partPairs_;
   std::vector<std::uint32_t> pairPartsBegin_;
-  std::vector<double> partPairGaps_;                   ///< per part pair: its gap, a lower bound
-  std::vector<std::uint32_t> capsuleWork_, faceWork_;  ///< the part pairs whose bounding spheres meet
+  std::vector<double> partPairGaps_;  ///< per part pair: its gap, a lower bound
+  /// The part pairs whose bounding spheres meet, by kind: kind k's from partWorkBegin_[k] on.
+  std::vector<std::uint32_t> partWork_;
+  std::uint32_t partWorkBegin_[kPartPairKinds] = {};
   double laneSafe_[kLanes] = {};
   std::vector<std::size_t> laneScalar_[kLanes];  ///< per lane: the pairs it tests alone
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "capsule_capsule.hpp"
+#include "lane_geometry.hpp"
 
 namespace pmdplan {
 namespace {
