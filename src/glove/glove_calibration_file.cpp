@@ -1,9 +1,8 @@
 #include "pmdplan/glove/glove_calibration_file.hpp"
 
 #include "pmdplan/core/atomic_file.hpp"
-#include "pmdplan/core/input_error.hpp"
 #include "pmdplan/text/number_text.hpp"
-#include "pmdplan/text/yaml_input.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 #include "pmdplan/text/yaml_writing.hpp"
 
 namespace pmdplan {
@@ -11,60 +10,46 @@ namespace {
 
 constexpr std::string_view kFormat = "pmdplan-glove-calibration";
 
-int sensorByName(const YAML::Node& node, const std::string& file, const std::string& context) {
-  const std::string name = yaml_input::text(node, file, context);
+/// A sensor named by `field` (a map key or a value): its index in cyberGloveSensorNames().
+int sensorByName(const YamlField& field, const std::string& name) {
   const int index = cyberGloveSensorIndex(name);
-  if (index < 0)
-    throw InputError(file, yaml_input::lineOf(node) + " (" + context + ")",
-                     "unknown sensor '" + name + "'; expected one of " + std::string(cyberGloveSensorList()));
+  if (index < 0) field.fail("unknown sensor '" + name + "'; expected one of " + std::string(cyberGloveSensorList()));
   return index;
 }
+
+int sensorAt(const YamlField& field) { return sensorByName(field, field.text("a sensor name")); }
 
 }  // namespace
 
 GloveCalibration parseGloveCalibration(std::string_view text, const std::string& file) {
-  const YAML::Node root = yaml_input::parseDocument(text, file);
-  yaml_input::rejectUnknownKeys(root, {"format", "version", "description", "sensors", "cross_terms"}, file, "");
-  yaml_input::checkFormat(root, kFormat, file);
+  const YamlField root = parseYamlFile(
+      text, file, kFormat, {"format", "version", "description", "sensors", "cross_terms"}, "a glove calibration");
   GloveCalibration calibration;
-  if (const YAML::Node description = root["description"]; description.IsDefined())
-    calibration.description = yaml_input::text(description, file, "description");
+  if (const auto description = root.optionalChild("description"))
+    calibration.description = description->text("a description");
 
-  const YAML::Node sensors = yaml_input::required(root, "sensors", file, "");
-  yaml_input::expectMap(sensors, file, "sensors");
+  const YamlField sensors = root.child("sensors", "a map of the 22 sensors, each {gain, offset}");
   std::array<bool, kCyberGloveSensorCount> seen{};
-  for (const auto& entry : sensors) {
-    const int index = sensorByName(entry.first, file, "sensors");
-    const std::string context = "sensors." + entry.first.Scalar();
-    if (seen[static_cast<std::size_t>(index)])
-      throw InputError(file, yaml_input::lineOf(entry.first) + " (" + context + ")", "sensor listed twice");
-    seen[static_cast<std::size_t>(index)] = true;
-    yaml_input::expectMap(entry.second, file, context);
-    yaml_input::rejectUnknownKeys(entry.second, {"gain", "offset"}, file, context);
-    SensorCalibration& sensor = calibration.sensors[static_cast<std::size_t>(index)];
-    sensor.gain =
-        yaml_input::number(yaml_input::required(entry.second, "gain", file, context), file, context + ".gain");
-    sensor.offset =
-        yaml_input::number(yaml_input::required(entry.second, "offset", file, context), file, context + ".offset");
+  for (const auto& [name, entry] : sensors.mapEntries("a map of sensors")) {
+    const auto index = static_cast<std::size_t>(sensorByName(entry, name));
+    if (seen[index]) entry.fail("sensor listed twice");
+    seen[index] = true;
+    entry.requireMapWithKeys({"gain", "offset"}, "{gain, offset}");
+    calibration.sensors[index].gain = entry.child("gain", "a gain in rad/count").number("a gain in rad/count");
+    calibration.sensors[index].offset = entry.child("offset", "an offset in rad").number("an offset in rad");
   }
-  for (int s = 0; s < kCyberGloveSensorCount; ++s)
-    if (!seen[static_cast<std::size_t>(s)])
-      throw InputError(file, yaml_input::lineOf(sensors) + " (sensors)",
-                       "no calibration for sensor " +
-                           std::string(cyberGloveSensorNames()[static_cast<std::size_t>(s)]) +
-                           "; every one of the 22 sensors needs {gain, offset}");
+  for (std::size_t s = 0; s < seen.size(); ++s)
+    if (!seen[s])
+      sensors.fail("no calibration for sensor " + std::string(cyberGloveSensorNames()[s]) +
+                   "; every one of the 22 sensors needs {gain, offset}");
 
-  if (const YAML::Node terms = root["cross_terms"]; terms.IsDefined() && !terms.IsNull()) {
-    yaml_input::expectSequence(terms, file, "cross_terms");
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-      const YAML::Node term = terms[i];
-      const std::string context = "cross_terms[" + std::to_string(i) + "]";
-      yaml_input::expectMap(term, file, context);
-      yaml_input::rejectUnknownKeys(term, {"sensor", "from", "gain"}, file, context);
+  if (const auto terms = root.optionalChild("cross_terms"); terms && !terms->node().IsNull()) {
+    for (const YamlField& term : terms->elements("a list of {sensor, from, gain}")) {
+      term.requireMapWithKeys({"sensor", "from", "gain"}, "{sensor, from, gain}");
       CalibrationCrossTerm cross;
-      cross.sensor = sensorByName(yaml_input::required(term, "sensor", file, context), file, context + ".sensor");
-      cross.from = sensorByName(yaml_input::required(term, "from", file, context), file, context + ".from");
-      cross.gain = yaml_input::number(yaml_input::required(term, "gain", file, context), file, context + ".gain");
+      cross.sensor = sensorAt(term.child("sensor", "a sensor name"));
+      cross.from = sensorAt(term.child("from", "a sensor name"));
+      cross.gain = term.child("gain", "a gain in rad/count").number("a gain in rad/count");
       calibration.crossTerms.push_back(cross);
     }
   }

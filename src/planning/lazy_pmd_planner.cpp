@@ -1,7 +1,6 @@
 #include "pmdplan/planning/lazy_pmd_planner.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 #include <string>
 
 #include "pmdplan/planning/hand_arm_draw.hpp"
@@ -16,45 +15,25 @@ Configuration interpolate(const Configuration& a, const Configuration& b, double
 
 LazyPmdPlanner::LazyPmdPlanner(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
                                std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters)
-    : space_(std::move(space)),
-      stateValidator_(stateValidator),
-      motionValidator_(motionValidator),
-      handSampler_(std::move(handSampler)),
-      parameters_(parameters) {
-  if (!handSampler_) throw std::invalid_argument("LazyPmdPlanner: a hand sampler is required");
-}
-
-void LazyPmdPlanner::setStartAndGoal(Configuration start, Configuration goal) {
-  start_ = std::move(start);
-  goal_ = std::move(goal);
-  armSampler_.reset();
-}
+    : PmdPlannerBase(std::move(space), stateValidator, motionValidator, std::move(handSampler), parameters,
+                     "LazyPmdPlanner") {}
 
 void LazyPmdPlanner::setup() {
-  parameters_.check();
-  space_.check();
-  checkStartAndGoal(space_, start_, goal_, "LazyPmdPlanner");
-  armSampler_.emplace(space_, start_, goal_);
+  setupProblem();
   radius_ = parameters_.lazy.radiusFactor * space_.distance(start_, goal_);
 }
 
 void LazyPmdPlanner::clear() {
   roadmap_.clear();
   draws_ = 0;
-  path_.clear();
-  unsmoothedPath_.clear();
-  statistics_ = {};
+  clearResults();
 }
 
 PlannerStatus LazyPmdPlanner::solve() {
   setup();
   clear();
-  random_.reseed(parameters_.seed);
-  run_.begin(parameters_.timeLimit, motionValidator_);
-
-  statistics_.stateChecks += 2;
-  if (!stateValidator_.isValid(start_)) return endRun(PlannerStatus::InvalidStart);
-  if (!stateValidator_.isValid(goal_)) return endRun(PlannerStatus::InvalidGoal);
+  beginRun();
+  if (const auto invalid = checkStartAndGoalStates()) return endRun(*invalid);
   const NodeIndex start = roadmap_.addNode(start_, space_.normalise(start_));
   const NodeIndex goal = roadmap_.addNode(goal_, space_.normalise(goal_));
   if (roadmap_.distance(start, goal) == 0.0) return finish({{start, goal}, {}});
@@ -145,10 +124,7 @@ PlannerStatus LazyPmdPlanner::finish(const LazyPath& path) {
 }
 
 PlannerStatus LazyPmdPlanner::endRun(PlannerStatus status) {
-  run_.end(status, motionValidator_, statistics_);
-  statistics_.roadmapNodes = roadmap_.nodeCount();
-  statistics_.roadmapEdges = roadmap_.edgeCount();
-  return status;
+  return finishRun(status, roadmap_.nodeCount(), roadmap_.edgeCount());
 }
 
 }  // namespace pmdplan

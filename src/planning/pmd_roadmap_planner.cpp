@@ -1,7 +1,6 @@
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 #include <string>
 
 #include "pmdplan/planning/hand_arm_draw.hpp"
@@ -14,25 +13,11 @@ namespace pmdplan {
 PmdRoadmapPlanner::PmdRoadmapPlanner(PlanningSpace space, StateValidator& stateValidator,
                                      MotionValidator& motionValidator, std::unique_ptr<HandSampler> handSampler,
                                      PlannerParameters parameters)
-    : space_(std::move(space)),
-      stateValidator_(stateValidator),
-      motionValidator_(motionValidator),
-      handSampler_(std::move(handSampler)),
-      parameters_(parameters) {
-  if (!handSampler_) throw std::invalid_argument("PmdRoadmapPlanner: a hand sampler is required");
-}
-
-void PmdRoadmapPlanner::setStartAndGoal(Configuration start, Configuration goal) {
-  start_ = std::move(start);
-  goal_ = std::move(goal);
-  armSampler_.reset();
-}
+    : PmdPlannerBase(std::move(space), stateValidator, motionValidator, std::move(handSampler), parameters,
+                     "PmdRoadmapPlanner") {}
 
 void PmdRoadmapPlanner::setup() {
-  parameters_.check();
-  space_.check();
-  checkStartAndGoal(space_, start_, goal_, "PmdRoadmapPlanner");
-  armSampler_.emplace(space_, start_, goal_);
+  setupProblem();
   // FINDNEIGHBORS' threshold: the start-goal distance (times a factor, 1 in the paper), in the
   // same normalised full space as all other distances (docs/deviations.md).
   startGoalDistance_ = space_.distance(start_, goal_);
@@ -41,19 +26,15 @@ void PmdRoadmapPlanner::setup() {
 
 void PmdRoadmapPlanner::clear() {
   roadmap_.clear();
-  path_.clear();
-  unsmoothedPath_.clear();
-  statistics_ = {};
+  clearResults();
 }
 
 // Algorithm 4 (RoadMap). The j and h loops live in sampleHypercube, FINDPATH in findPath.
 PlannerStatus PmdRoadmapPlanner::solve() {
   setup();
+  clear();
   beginRun();
-  ++statistics_.stateChecks;
-  if (!stateValidator_.isValid(start_)) return endRun(PlannerStatus::InvalidStart);
-  ++statistics_.stateChecks;
-  if (!stateValidator_.isValid(goal_)) return endRun(PlannerStatus::InvalidGoal);
+  if (const auto invalid = checkStartAndGoalStates()) return endRun(*invalid);
 
   startNode_ = addNode(start_, 0.0, 0);
   goalNode_ = addNode(goal_, 1.0, 0);
@@ -119,17 +100,8 @@ PlannerStatus PmdRoadmapPlanner::findPath() {
   return endRun(PlannerStatus::Solved);
 }
 
-void PmdRoadmapPlanner::beginRun() {
-  clear();
-  random_.reseed(parameters_.seed);
-  run_.begin(parameters_.timeLimit, motionValidator_);
-}
-
 PlannerStatus PmdRoadmapPlanner::endRun(PlannerStatus status) {
-  run_.end(status, motionValidator_, statistics_);
-  statistics_.roadmapNodes = roadmap_.nodeCount();
-  statistics_.roadmapEdges = roadmap_.edgeCount();
-  return status;
+  return finishRun(status, roadmap_.nodeCount(), roadmap_.edgeCount());
 }
 
 }  // namespace pmdplan

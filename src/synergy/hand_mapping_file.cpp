@@ -5,62 +5,53 @@
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/cyberglove_sensors.hpp"
 #include "pmdplan/text/number_text.hpp"
-#include "pmdplan/text/yaml_input.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 #include "pmdplan/text/yaml_writing.hpp"
 
 namespace pmdplan {
 namespace {
 constexpr std::string_view kFormat = "pmdplan-hand-mapping";
 
-JointRule readRule(const YAML::Node& node, const std::string& file, const std::string& context) {
-  yaml_input::expectMap(node, file, context);
-  yaml_input::rejectUnknownKeys(node, {"joint", "sensors", "offset", "constant"}, file, context);
+JointRule readRule(const YamlField& node) {
+  node.requireMapWithKeys({"joint", "sensors", "offset", "constant"}, "{joint, sensors, offset} or {joint, constant}");
   JointRule rule;
-  rule.sourceLine = node.Mark().line + 1;
-  rule.joint = yaml_input::text(yaml_input::required(node, "joint", file, context), file, context + ".joint");
+  rule.sourceLine = node.line();
+  rule.joint = node.child("joint", "a joint name").text("a joint name");
   const std::string where = "line " + std::to_string(rule.sourceLine) + " (joint " + rule.joint + ")";
-  const YAML::Node sensors = node["sensors"];
-  const YAML::Node constant = node["constant"];
-  if (sensors.IsDefined() == constant.IsDefined())
-    throw InputError(file, where, "give either sensors: {NAME: gain, ...} or constant: VALUE, not both or neither");
-  if (constant.IsDefined()) {
-    if (node["offset"].IsDefined())
-      throw InputError(file, where, "a constant joint takes no offset; put the value in constant");
-    rule.offset = yaml_input::number(constant, file, context + ".constant");
+  const std::optional<YamlField> sensors = node.optionalChild("sensors");
+  const std::optional<YamlField> constant = node.optionalChild("constant");
+  const std::optional<YamlField> offset = node.optionalChild("offset");
+  if (sensors.has_value() == constant.has_value())
+    throw InputError(node.file(), where,
+                     "give either sensors: {NAME: gain, ...} or constant: VALUE, not both or neither");
+  if (constant) {
+    if (offset) throw InputError(node.file(), where, "a constant joint takes no offset; put the value in constant");
+    rule.offset = constant->number("a joint value in rad");
     return rule;
   }
-  yaml_input::expectMap(sensors, file, context + ".sensors");
-  if (sensors.size() == 0) throw InputError(file, where, "sensors is empty; give at least one sensor or a constant");
-  for (const auto& entry : sensors) {
-    const std::string name = yaml_input::text(entry.first, file, context + ".sensors");
+  const auto terms = sensors->mapEntries("a map of sensor names to gains");
+  if (terms.empty()) throw InputError(node.file(), where, "sensors is empty; give at least one sensor or a constant");
+  for (const auto& [name, gain] : terms) {
     const int sensor = cyberGloveSensorIndex(name);
     if (sensor < 0)
-      throw InputError(file, yaml_input::lineOf(entry.first) + " (joint " + rule.joint + ")",
+      throw InputError(node.file(), "line " + std::to_string(gain.line()) + " (joint " + rule.joint + ")",
                        "unknown sensor '" + name + "'; expected one of " + std::string(cyberGloveSensorList()));
-    for (const SensorTerm& earlier : rule.terms)
-      if (earlier.sensor == sensor)
-        throw InputError(file, yaml_input::lineOf(entry.first) + " (joint " + rule.joint + ")",
-                         "sensor " + name + " listed twice");
-    rule.terms.push_back({sensor, yaml_input::number(entry.second, file, context + ".sensors." + name)});
+    rule.terms.push_back({sensor, gain.number("a gain")});
   }
-  if (const YAML::Node offset = node["offset"]; offset.IsDefined())
-    rule.offset = yaml_input::number(offset, file, context + ".offset");
+  if (offset) rule.offset = offset->number("an offset in rad");
   return rule;
 }
 }  // namespace
 
 HandMapping parseHandMapping(std::string_view text, const std::string& file) {
-  const YAML::Node root = yaml_input::parseDocument(text, file);
-  yaml_input::rejectUnknownKeys(root, {"format", "version", "description", "joints"}, file, "");
-  yaml_input::checkFormat(root, kFormat, file);
+  const YamlField root =
+      parseYamlFile(text, file, kFormat, {"format", "version", "description", "joints"}, "a hand mapping");
   HandMapping mapping;
   mapping.sourceFile = file;
-  if (const YAML::Node description = root["description"]; description.IsDefined())
-    mapping.description = yaml_input::text(description, file, "description");
-  const YAML::Node joints = yaml_input::required(root, "joints", file, "");
-  yaml_input::expectSequence(joints, file, "joints");
-  for (std::size_t i = 0; i < joints.size(); ++i) {
-    JointRule rule = readRule(joints[i], file, "joints[" + std::to_string(i) + "]");
+  if (const auto description = root.optionalChild("description"))
+    mapping.description = description->text("a description");
+  for (const YamlField& node : root.child("joints", "a list of joint rules").elements("a list of joint rules")) {
+    JointRule rule = readRule(node);
     for (const JointRule& earlier : mapping.rules)
       if (earlier.joint == rule.joint)
         throw InputError(file, "line " + std::to_string(rule.sourceLine) + " (joint " + rule.joint + ")",

@@ -9,7 +9,7 @@
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/text/number_text.hpp"
-#include "pmdplan/text/yaml_input.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 #include "pmdplan/text/yaml_writing.hpp"
 
 namespace pmdplan {
@@ -19,7 +19,7 @@ constexpr std::string_view kFormat = "pmdplan-synergy-model";
 constexpr double kUnitTolerance = 1e-6;  // file values are rounded; orthonormality to 1e-6 is exact enough
 
 enum class Part { Joints, Mean, OwnAxis, Direction };
-/// Names where a part of the model is: "line 12 (directions[1])" for a file, "directions[1]" otherwise.
+/// Names where a part of the model is: "directions[1] (line 12)" for a file, "directions[1]" otherwise.
 using Locate = std::function<std::string(Part, int)>;
 
 std::string defaultLocation(Part part, int index) {
@@ -105,11 +105,10 @@ void validate(const SynergyModel& model, const std::string& source, const Locate
                      "the directions are linearly dependent; a basis needs independent directions");
 }
 
-Eigen::VectorXd numberList(const YAML::Node& node, const std::string& file, const std::string& context) {
-  yaml_input::expectSequence(node, file, context);
-  Eigen::VectorXd values(static_cast<Eigen::Index>(node.size()));
-  for (std::size_t i = 0; i < node.size(); ++i)
-    values(static_cast<Eigen::Index>(i)) = yaml_input::number(node[i], file, context + "[" + std::to_string(i) + "]");
+Eigen::VectorXd numberList(const YamlField& field, const std::string& expected) {
+  const std::vector<YamlField> items = field.elements("a list of " + expected);
+  Eigen::VectorXd values(static_cast<Eigen::Index>(items.size()));
+  for (std::size_t i = 0; i < items.size(); ++i) values(static_cast<Eigen::Index>(i)) = items[i].number(expected);
   return values;
 }
 
@@ -126,78 +125,67 @@ void validateSynergyModel(const SynergyModel& model, const std::string& sourceNa
 }
 
 SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
-  const YAML::Node root = yaml_input::parseDocument(text, file);
-  yaml_input::rejectUnknownKeys(
-      root, {"format", "version", "provenance", "joints", "own_axis_joints", "orthonormal", "mean", "directions"}, file,
-      "");
-  yaml_input::checkFormat(root, kFormat, file);
+  const YamlField root = parseYamlFile(
+      text, file, kFormat,
+      {"format", "version", "provenance", "joints", "own_axis_joints", "orthonormal", "mean", "directions"},
+      "a synergy model");
   SynergyModel model;
-  if (const YAML::Node provenance = root["provenance"]; provenance.IsDefined())
-    model.provenance = yaml_input::text(provenance, file, "provenance");
+  if (const auto provenance = root.optionalChild("provenance"))
+    model.provenance = provenance->text("a provenance text");
 
-  const YAML::Node joints = yaml_input::required(root, "joints", file, "");
-  yaml_input::expectSequence(joints, file, "joints");
-  for (std::size_t i = 0; i < joints.size(); ++i) {
-    const std::string context = "joints[" + std::to_string(i) + "]";
-    const YAML::Node joint = joints[i];
-    yaml_input::expectMap(joint, file, context);
-    yaml_input::rejectUnknownKeys(joint, {"name", "lower", "upper"}, file, context);
-    model.joints.push_back(
-        {yaml_input::text(yaml_input::required(joint, "name", file, context), file, context + ".name"),
-         yaml_input::number(yaml_input::required(joint, "lower", file, context), file, context + ".lower"),
-         yaml_input::number(yaml_input::required(joint, "upper", file, context), file, context + ".upper")});
+  const std::vector<YamlField> joints =
+      root.child("joints", "a list of {name, lower, upper}").elements("a list of joints");
+  for (const YamlField& joint : joints) {
+    joint.requireMapWithKeys({"name", "lower", "upper"}, "{name, lower, upper}");
+    model.joints.push_back({joint.child("name", "a joint name").text("a joint name"),
+                            joint.child("lower", "a lower limit in rad").number("a lower limit in rad"),
+                            joint.child("upper", "an upper limit in rad").number("an upper limit in rad")});
   }
-  if (const YAML::Node own = root["own_axis_joints"]; own.IsDefined() && !own.IsNull()) {
-    yaml_input::expectSequence(own, file, "own_axis_joints");
-    for (std::size_t i = 0; i < own.size(); ++i)
-      model.ownAxisJoints.push_back(yaml_input::text(own[i], file, "own_axis_joints"));
-  }
-  if (const YAML::Node orthonormal = root["orthonormal"]; orthonormal.IsDefined())
-    model.orthonormal = yaml_input::boolean(orthonormal, file, "orthonormal");
-  const YAML::Node meanNode = yaml_input::required(root, "mean", file, "");
-  model.mean = numberList(meanNode, file, "mean");
+  const std::optional<YamlField> ownAxis = root.optionalChild("own_axis_joints");
+  if (ownAxis && !ownAxis->node().IsNull())
+    for (const YamlField& name : ownAxis->elements("a list of joint names"))
+      model.ownAxisJoints.push_back(name.text("a joint name"));
+  if (const auto orthonormal = root.optionalChild("orthonormal"))
+    model.orthonormal = orthonormal->boolean("orthonormal");
+  const YamlField mean = root.child("mean", "a list of normalised joint values");
+  model.mean = numberList(mean, "normalised joint values");
 
-  const YAML::Node directions = yaml_input::required(root, "directions", file, "");
-  yaml_input::expectSequence(directions, file, "directions");
+  const std::vector<YamlField> directions =
+      root.child("directions", "a list of {sigma, variance_fraction, vector}").elements("a list of directions");
   const auto count = static_cast<Eigen::Index>(directions.size());
   model.directions = Eigen::MatrixXd::Zero(model.jointCount(), count);
   model.sigma.resize(count);
   model.varianceFraction.resize(count);
   for (Eigen::Index k = 0; k < count; ++k) {
-    const YAML::Node direction = directions[static_cast<std::size_t>(k)];
-    const std::string context = "directions[" + std::to_string(k) + "]";
-    yaml_input::expectMap(direction, file, context);
-    yaml_input::rejectUnknownKeys(direction, {"sigma", "variance_fraction", "vector"}, file, context);
-    model.sigma(k) =
-        yaml_input::number(yaml_input::required(direction, "sigma", file, context), file, context + ".sigma");
-    model.varianceFraction(k) = yaml_input::number(yaml_input::required(direction, "variance_fraction", file, context),
-                                                   file, context + ".variance_fraction");
-    const Eigen::VectorXd vector =
-        numberList(yaml_input::required(direction, "vector", file, context), file, context + ".vector");
-    if (vector.size() != model.jointCount())
-      throw InputError(file, yaml_input::lineOf(direction) + " (" + context + ".vector)",
-                       std::to_string(vector.size()) + " values for " + std::to_string(model.jointCount()) + " joints");
-    model.directions.col(k) = vector;
+    const YamlField& direction = directions[static_cast<std::size_t>(k)];
+    direction.requireMapWithKeys({"sigma", "variance_fraction", "vector"}, "{sigma, variance_fraction, vector}");
+    model.sigma(k) = direction.child("sigma", "a standard deviation").number("a standard deviation");
+    model.varianceFraction(k) =
+        direction.child("variance_fraction", "a fraction of the variance").number("a fraction of the variance");
+    const YamlField vector = direction.child("vector", "a list of one value per joint");
+    const Eigen::VectorXd values = numberList(vector, "values");
+    if (values.size() != model.jointCount())
+      vector.fail(std::to_string(values.size()) + " values for " + std::to_string(model.jointCount()) + " joints");
+    model.directions.col(k) = values;
   }
 
+  const auto item = [](const std::vector<YamlField>& items, const YamlField& list, int index) {
+    return static_cast<std::size_t>(index) < items.size() ? items[static_cast<std::size_t>(index)].location()
+                                                          : list.location();
+  };
   validate(model, file, [&](Part part, int index) {
-    const std::string name = defaultLocation(part, index);
     switch (part) {
       case Part::Joints:
-        return yaml_input::lineOf(
-                   static_cast<std::size_t>(index) < joints.size() ? joints[static_cast<std::size_t>(index)] : joints) +
-               " (" + name + ")";
+        return item(joints, root.child("joints", ""), index);
       case Part::Mean:
-        return yaml_input::lineOf(meanNode) + " (mean)";
+        return mean.location();
       case Part::OwnAxis:
-        return yaml_input::lineOf(root["own_axis_joints"]) + " (own_axis_joints)";
+        if (ownAxis) return ownAxis->location();
+        break;
       case Part::Direction:
-        return yaml_input::lineOf(static_cast<std::size_t>(index) < directions.size()
-                                      ? directions[static_cast<std::size_t>(index)]
-                                      : directions) +
-               " (" + name + ")";
+        return item(directions, root.child("directions", ""), index);
     }
-    return name;
+    return defaultLocation(part, index);
   });
   return model;
 }

@@ -94,16 +94,33 @@ YAML::Node parseYamlDocument(std::string_view text, const std::string& file) {
   return root;
 }
 
+YamlField parseYamlFile(std::string_view text, const std::string& file, std::string_view format,
+                        std::initializer_list<std::string_view> keys, const std::string& expected) {
+  const YamlField root(file, parseYamlDocument(text, file));
+  root.requireMapWithKeys(keys, expected);
+  if (const auto given = root.optionalChild("format"); given) {
+    if (given->text("the file format") != format)
+      given->fail(quoted(given->node().Scalar()) + " is not a " + std::string(format) + " file");
+  }
+  if (const auto version = root.optionalChild("version"); version) {
+    if (!version->node().IsScalar() || version->node().Scalar() != "1")
+      version->fail("unsupported version " + describeNode(version->node()) + "; expected 1");
+  }
+  return root;
+}
+
 YamlField::YamlField(std::string file, YAML::Node root) : YamlField(std::move(file), "", root) {}
 
 YamlField::YamlField(std::string file, std::string path, YAML::Node node)
     : file_(std::move(file)), path_(std::move(path)), node_(node), line_(oneBasedLine(node)) {}
 
-void YamlField::fail(const std::string& message) const {
+std::string YamlField::location() const {
   std::string field = path_.empty() ? std::string("document") : path_;
   if (line_ > 0) field += " (line " + std::to_string(line_) + ")";
-  throw InputError(file_, field, message);
+  return field;
 }
+
+void YamlField::fail(const std::string& message) const { throw InputError(file_, location(), message); }
 
 std::vector<std::pair<std::string, YamlField>> YamlField::mapEntries(const std::string& expected) const {
   if (!node_.IsMap()) fail("expected " + expected + ", got " + describeNode(node_));
@@ -203,6 +220,14 @@ double YamlField::positiveNumber(const std::string& expected) const {
     fail("expected " + expected + ", got " + messageNumberText(value));
   }
   return value;
+}
+
+bool YamlField::boolean(const std::string& expected) const {
+  if (node_.IsScalar() && node_.Tag() != "!") {
+    if (node_.Scalar() == "true") return true;
+    if (node_.Scalar() == "false") return false;
+  }
+  fail("expected " + expected + " (true or false), got " + describeNode(node_));
 }
 
 Eigen::Vector3d YamlField::vector3(const std::string& expected) const {

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/text/yaml_input.hpp"
+#include "pmdplan/text/yaml_field.hpp"
 
 namespace pmdplan {
 namespace {
@@ -17,37 +16,20 @@ struct FileLimit {
   std::optional<double> acceleration;
 };
 
-double positive(const YAML::Node& node, const std::string& file, const std::string& key) {
-  const double value = yaml_input::number(node, file, key);
-  if (!(std::isfinite(value) && value > 0.0)) throw InputError(file, key, "expected a positive number");
-  return value;
-}
-
 std::map<std::string, FileLimit> readLimitsFile(const RobotModel& robot, const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string(), "", "cannot open the joint-limits file");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string file = path.string();
-  const YAML::Node root = yaml_input::parseDocument(text.str(), file);
-  yaml_input::expectMap(root, file, "the document");
-  yaml_input::rejectUnknownKeys(root, {"joint_limits"}, file, "the document");
-  const YAML::Node joints = yaml_input::required(root, "joint_limits", file, "the document");
-  yaml_input::expectMap(joints, file, "joint_limits");
+  const YamlField root(path.string(), parseYamlDocument(readTextFile(path), path.string()));
+  root.requireMapWithKeys({"joint_limits"}, "a joint-limits file");
   std::map<std::string, FileLimit> limits;
-  for (const auto& entry : joints) {
-    const std::string name = yaml_input::text(entry.first, file, "joint_limits");
-    const std::string key = "joint_limits." + name;
-    if (robot.jointIndex(name) < 0 ||
-        robot.joints()[static_cast<std::size_t>(robot.jointIndex(name))].type == JointType::Fixed)
-      throw InputError(file, key, "'" + name + "' is not a moving joint of robot " + robot.name());
-    yaml_input::expectMap(entry.second, file, key);
-    yaml_input::rejectUnknownKeys(entry.second, {"max_velocity", "max_acceleration"}, file, key);
+  for (const auto& [name, entry] : root.child("joint_limits", "a map of joint names").mapEntries("a map of joints")) {
+    const int index = robot.jointIndex(name);
+    if (index < 0 || robot.joints()[static_cast<std::size_t>(index)].type == JointType::Fixed)
+      entry.fail("'" + name + "' is not a moving joint of robot " + robot.name());
+    entry.requireMapWithKeys({"max_velocity", "max_acceleration"}, "{max_velocity, max_acceleration}");
     FileLimit limit;
-    if (entry.second["max_velocity"])
-      limit.velocity = positive(entry.second["max_velocity"], file, key + ".max_velocity");
-    if (entry.second["max_acceleration"])
-      limit.acceleration = positive(entry.second["max_acceleration"], file, key + ".max_acceleration");
+    if (const auto velocity = entry.optionalChild("max_velocity"))
+      limit.velocity = velocity->positiveNumber("a positive velocity");
+    if (const auto acceleration = entry.optionalChild("max_acceleration"))
+      limit.acceleration = acceleration->positiveNumber("a positive acceleration");
     limits[name] = limit;
   }
   return limits;

@@ -229,7 +229,7 @@ TEST(SynergiesCliBadInput, NonOrthonormalDirectionsInASynergyFile) {
                 "directions:\n  - {sigma: 0.2, variance_fraction: 0.8, vector: [1, 0]}\n"
                 "  - {sigma: 0.1, variance_fraction: 0.2, vector: [0.6, 0.8]}\n");
   expectError(runCli(dir, "synergies --show " + quoted(file)),
-              file.string() + ": line 7 (directions[1]): directions 1 and 2 are not orthonormal");
+              file.string() + ": directions[1] (line 7): directions 1 and 2 are not orthonormal");
 }
 
 TEST(SynergiesCliBadInput, UnknownSensorInAMapping) {

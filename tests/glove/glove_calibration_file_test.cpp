@@ -56,15 +56,15 @@ TEST(GloveCalibrationFile, UnknownSensorNamesTheLine) {
 TEST(GloveCalibrationFile, EverySensorNeedsACalibration) {
   std::string text = sensorsBlock();
   text.erase(text.find("  WristYaw"));
-  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "(sensors)",
+  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "sensors (line 2)",
                          "no calibration for sensor WristYaw");
 }
 
 TEST(GloveCalibrationFile, BadValuesNameLineAndKey) {
   std::string text = sensorsBlock();
   text.replace(text.find("gain: 0.01"), 10, "gain: fast");
-  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "line 2 (sensors.ThumbRotate.gain)",
-                         "not a finite number");
+  test::expectInputError([&] { parseGloveCalibration(text, "c.yaml"); }, "c.yaml", "sensors.ThumbRotate.gain (line 2)",
+                         "expected a gain in rad/count, got 'fast'");
   test::expectInputError(
       [] {
         parseGloveCalibration(sensorsBlock() + "cross_terms:\n  - {sensor: ThumbRotate, from: Nope, gain: 1}\n",
@@ -74,7 +74,7 @@ TEST(GloveCalibrationFile, BadValuesNameLineAndKey) {
   test::expectInputError([] { parseGloveCalibration(sensorsBlock() + "colour: blue\n", "c.yaml"); }, "c.yaml",
                          "line 24", "unknown key 'colour'");
   test::expectInputError([] { parseGloveCalibration("format: pmdplan-hand-mapping\n" + sensorsBlock(), "c.yaml"); },
-                         "c.yaml", "line 1 (format)", "not a pmdplan-glove-calibration file");
+                         "c.yaml", "format (line 1)", "not a pmdplan-glove-calibration file");
 }
 
 TEST(GloveCalibrationFile, SyntaxErrorsAndEmptyFilesNameTheLine) {

@@ -89,7 +89,7 @@ TEST(HandMappingFile, MalformedRulesNameTheLine) {
       [] { parseHandMapping("joints:\n  - {joint: a, constant: 0}\n  - {joint: a, constant: 0}\n", "m.yaml"); },
       "m.yaml", "line 3 (joint a)", "listed twice");
   test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, sensors: {IndexMPJ: one}}\n", "m.yaml"); },
-                         "m.yaml", "line 2", "not a finite number");
+                         "m.yaml", "joints[0].sensors.IndexMPJ (line 2)", "expected a gain, got 'one'");
   test::expectInputError([] { parseHandMapping("joints:\n  - {joint: a, sensor: IndexMPJ}\n", "m.yaml"); }, "m.yaml",
                          "line 2", "unknown key 'sensor'");
 }

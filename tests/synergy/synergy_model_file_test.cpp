@@ -79,7 +79,7 @@ std::string withDirections(const std::string& first, const std::string& second, 
 
 TEST(SynergyModelFile, NonOrthonormalDirectionsNameTheLine) {
   test::expectInputError([] { parseSynergyModel(withDirections("[1, 0]", "[0.6, 0.8]"), "m.yaml"); }, "m.yaml",
-                         "line 9 (directions[1])", "directions 1 and 2 are not orthonormal");
+                         "directions[1] (line 9)", "directions 1 and 2 are not orthonormal");
 }
 
 TEST(SynergyModelFile, ANonOrthogonalBasisMarkedSoIsAccepted) {
@@ -91,7 +91,7 @@ TEST(SynergyModelFile, ANonOrthogonalBasisMarkedSoIsAccepted) {
 
 TEST(SynergyModelFile, DirectionsMustBeUnitVectors) {
   test::expectInputError([] { parseSynergyModel(withDirections("[2, 0]", "[0, 1]"), "m.yaml"); }, "m.yaml",
-                         "line 8 (directions[0])", "has length 2");
+                         "directions[0] (line 8)", "has length 2");
 }
 
 TEST(SynergyModelFile, SizesAndRangesAreChecked) {
@@ -101,7 +101,7 @@ TEST(SynergyModelFile, SizesAndRangesAreChecked) {
       "m.yaml", "line 8", "1 values for 2 joints");
   test::expectInputError(
       [&] { parseSynergyModel(std::string(text).replace(text.find("[0.5, 0.5]"), 10, "[0.5, 1.5]"), "m.yaml"); },
-      "m.yaml", "line 6 (mean)", "normalised values lie in [0, 1]");
+      "m.yaml", "mean (line 6)", "normalised values lie in [0, 1]");
   test::expectInputError(
       [&] { parseSynergyModel(std::string(text).replace(text.find("sigma: 0.1"), 10, "sigma: -1"), "m.yaml"); },
       "m.yaml", "line 9", "sigma must be zero or positive");
@@ -110,13 +110,13 @@ TEST(SynergyModelFile, SizesAndRangesAreChecked) {
         parseSynergyModel(std::string(text).replace(text.find("own_axis_joints: []"), 19, "own_axis_joints: [a]"),
                           "m.yaml");
       },
-      "m.yaml", "line 8 (directions[0])", "moves own-axis joint a");
+      "m.yaml", "directions[0] (line 8)", "moves own-axis joint a");
   test::expectInputError(
       [&] {
         parseSynergyModel(std::string(text).replace(text.find("own_axis_joints: []"), 19, "own_axis_joints: [z]"),
                           "m.yaml");
       },
-      "m.yaml", "line 4 (own_axis_joints)", "'z' is not among the joints");
+      "m.yaml", "own_axis_joints (line 4)", "'z' is not among the joints");
   test::expectInputError([&] { parseSynergyModel(text + "kappa: 2\n", "m.yaml"); }, "m.yaml", "line 10",
                          "unknown key 'kappa'");
 }

@@ -1,5 +1,6 @@
 // The one YAML loader: empty files, syntax errors, repeated keys at any depth and alias bombs are
-// InputErrors naming the file, the line and, for a key, its field path.
+// InputErrors naming the file, the line and, for a key, its field path; our own files' roots
+// (parseYamlFile) check their keys, format and version.
 #include <gtest/gtest.h>
 
 #include "pmdplan/text/yaml_field.hpp"
@@ -32,6 +33,21 @@ TEST(YamlDocument, AliasesThatRepeatASubtreeTooOftenAreRefused) {
             std::to_string(i - 1) + ", *a" + std::to_string(i - 1) + ", *a" + std::to_string(i - 1) + ", *a" +
             std::to_string(i - 1) + ", *a" + std::to_string(i - 1) + ", *a" + std::to_string(i - 1) + "]\n";
   test::expectInputError([&] { parseYamlDocument(text, "a.yaml"); }, "a.yaml", "document", "through aliases");
+}
+
+TEST(YamlDocument, OurOwnFilesCheckTheirKeysFormatAndVersion) {
+  const auto parse = [](const std::string& text) {
+    return parseYamlFile(text, "x.yaml", "pmdplan-x", {"format", "version", "flag"}, "an x file");
+  };
+  EXPECT_TRUE(parse("format: pmdplan-x\nversion: 1\nflag: true\n").child("flag", "a flag").boolean("flag"));
+  test::expectInputError([&] { parse("format: pmdplan-y\n"); }, "x.yaml", "format (line 1)", "not a pmdplan-x file");
+  test::expectInputError([&] { parse("version: 2\n"); }, "x.yaml", "version (line 1)", "unsupported version '2'");
+  test::expectInputError([&] { parse("- 1\n"); }, "x.yaml", "document", "expected an x file, got a list");
+  test::expectInputError([&] { parse("colour: 1\n"); }, "x.yaml", "colour (line 1)", "unknown key 'colour'");
+  test::expectInputError([&] { parse("flag: yes\n").child("flag", "").boolean("flag"); }, "x.yaml", "flag (line 1)",
+                         "expected flag (true or false), got 'yes'");
+  test::expectInputError([&] { parse("flag: 'true'\n").child("flag", "").boolean("flag"); }, "x.yaml", "flag",
+                         "true or false");
 }
 
 }  // namespace

@@ -23,7 +23,9 @@ class YamlField {
   /// 1-based line of the node in the file, or 0 where yaml-cpp gives none.
   int line() const { return line_; }
 
-  /// Throws the InputError for this field: "<path> (line N)" and the message.
+  /// "<path> (line N)", the InputError field of this node's complaints ("document" for the root).
+  std::string location() const;
+  /// Throws the InputError for this field: location() and the message.
   [[noreturn]] void fail(const std::string& message) const;
 
   /// Requires a map whose keys are plain scalars, each allowed and none repeated; `expected`
@@ -46,6 +48,8 @@ class YamlField {
   /// are rejected).
   double number(const std::string& expected) const;
   double positiveNumber(const std::string& expected) const;
+  /// `true` or `false`, written as such (YAML 1.1's yes/no/on/off are refused).
+  bool boolean(const std::string& expected) const;
   /// A list of exactly three finite numbers.
   Eigen::Vector3d vector3(const std::string& expected) const;
   Eigen::Vector3d positiveVector3(const std::string& expected) const;
@@ -67,6 +71,12 @@ std::string joinFieldPath(const std::string& parent, std::string_view key);
 /// a syntax error ("line N, column M"), a key given twice in any map (its field path and line) or
 /// a document that aliases make larger than pmdplan reads.
 YAML::Node parseYamlDocument(std::string_view text, const std::string& file);
+
+/// The root of one of pmdplan's own files (calibration, mapping, synergy model, ...): the document
+/// parsed as parseYamlDocument does, a map with only `keys`, and `format:` and `version:` optional
+/// but, where given, `format` and 1. `expected` describes the file for the messages.
+YamlField parseYamlFile(std::string_view text, const std::string& file, std::string_view format,
+                        std::initializer_list<std::string_view> keys, const std::string& expected);
 
 /// Throws unless no map below `root` repeats a key (parseYamlDocument calls it).
 void rejectRepeatedKeys(const YamlField& root);

@@ -1,0 +1,80 @@
+#pragma once
+// What both PMD planners (PmdRoadmapPlanner, the paper's; LazyPmdPlanner, ours) share, as OMPL's
+// base::Planner does for its planners: the problem (the space, the borrowed validators, the hand
+// sampler, the parameters, c_ini and c_goal with the arm sampler along their segment), one run's
+// random source and clock, and its results (the path before and after smoothing, the statistics).
+// A planner adds its roadmap and its solve().
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pmdplan/collision/motion_validator.hpp"
+#include "pmdplan/collision/state_validator.hpp"
+#include "pmdplan/core/random_source.hpp"
+#include "pmdplan/model/configuration.hpp"
+#include "pmdplan/planning/arm_segment_sampler.hpp"
+#include "pmdplan/planning/hand_sampler.hpp"
+#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_run.hpp"
+#include "pmdplan/planning/planning_space.hpp"
+#include "pmdplan/planning/planning_statistics.hpp"
+
+namespace pmdplan {
+
+class PmdPlannerBase {
+ public:
+  PmdPlannerBase(const PmdPlannerBase&) = delete;
+  PmdPlannerBase& operator=(const PmdPlannerBase&) = delete;
+
+  /// c_ini and c_goal: full configurations within the limits. They need not lie in the PMD subspace.
+  void setStartAndGoal(Configuration start, Configuration goal);
+
+  /// The smoothed path (c_ini first, c_goal last); empty unless solved.
+  const std::vector<Configuration>& path() const { return path_; }
+  /// The path the search found, before smoothing.
+  const std::vector<Configuration>& unsmoothedPath() const { return unsmoothedPath_; }
+  const PlanningStatistics& statistics() const { return statistics_; }
+  const PlanningSpace& space() const { return space_; }
+  const PlannerParameters& parameters() const { return parameters_; }
+  const HandSampler& handSampler() const { return *handSampler_; }
+
+ protected:
+  /// The validators are borrowed and must outlive the planner; `name` heads its error messages.
+  PmdPlannerBase(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
+                 std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters, std::string name);
+  ~PmdPlannerBase() = default;
+
+  /// Checks the parameters, the space and the problem and places the arm sampler on the segment.
+  /// Throws InputError for bad parameters, std::invalid_argument for a malformed space or problem.
+  void setupProblem();
+  /// Drops the path and the statistics.
+  void clearResults();
+  /// Reseeds the random source and starts the clock (after the planner's clear()).
+  void beginRun();
+  /// Checks c_ini, then c_goal, counting each check: the status to end with if one collides.
+  std::optional<PlannerStatus> checkStartAndGoalStates();
+  /// Closes the statistics with the status, the clock and the roadmap's size.
+  PlannerStatus finishRun(PlannerStatus status, std::size_t roadmapNodes, std::size_t roadmapEdges);
+
+  PlanningSpace space_;
+  StateValidator& stateValidator_;
+  MotionValidator& motionValidator_;
+  std::unique_ptr<HandSampler> handSampler_;
+  PlannerParameters parameters_;
+
+  Configuration start_;
+  Configuration goal_;
+  std::optional<ArmSegmentSampler> armSampler_;
+
+  RandomSource random_;
+  std::vector<Configuration> path_;
+  std::vector<Configuration> unsmoothedPath_;
+  PlanningStatistics statistics_;
+  PlannerRun run_;
+
+ private:
+  std::string name_;
+};
+
+}  // namespace pmdplan
