@@ -1,8 +1,9 @@
 #pragma once
 // The building blocks the pair kernels (one header per pair of part kinds, docs/architecture.md)
 // share, lane by lane over lane vectors (lane_vector.hpp) of any width: the distance between two
-// segments, a bound on a segment's distance to a solid cylinder, a placed part's projection on an
-// axis, and the gap between two parts' projections on one part's own axes. Always inlined.
+// segments, a point in a part's own frame, a bound on a segment's distance to a solid cylinder, a
+// placed part's projection on an axis, and the gap between two parts' projections on one part's own
+// axes. Always inlined.
 #include <limits>
 
 #include "lane_parts.hpp"
@@ -18,6 +19,16 @@ template <class V, class M>
 template <class V>
 [[gnu::always_inline]] inline V choose(bool condition, V yes, V no) {
   return condition ? yes : no;
+}
+
+/// The point `c` in a placed part's own frame: about its centre `a`, along its axes (the rotation
+/// transposed).
+template <class V>
+[[gnu::always_inline]] inline Point<V> inPartFrame(const ConvexPart& part, const Point<V>& c) {
+  const Point<V> d = {c.x - part.a[0], c.y - part.a[1], c.z - part.a[2]};
+  const double* m = part.axes;
+  return {m[0] * d.x + m[3] * d.y + m[6] * d.z, m[1] * d.x + m[4] * d.y + m[7] * d.z,
+          m[2] * d.x + m[5] * d.y + m[8] * d.z};
 }
 
 /// Distance between the segments p0-p1 and q0-q1 lane by lane, given 1 / their squared lengths
