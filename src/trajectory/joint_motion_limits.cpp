@@ -16,21 +16,44 @@ struct FileLimit {
   std::optional<double> acceleration;
 };
 
+/// A limit of a MoveIt-style entry: `max_<what>` applies unless `has_<what>_limits` is false (MoveIt
+/// writes `has_acceleration_limits: false` with `max_acceleration: 0`, meaning none).
+std::optional<double> limitOf(const YamlField& entry, const std::string& what, const std::string& expected) {
+  const auto flag = entry.optionalChild("has_" + what + "_limits");
+  const auto value = entry.optionalChild("max_" + what);
+  if (flag && !flag->boolean("has_" + what + "_limits")) return std::nullopt;
+  if (!value) {
+    if (flag) entry.fail("has_" + what + "_limits is true but max_" + what + " is missing");
+    return std::nullopt;
+  }
+  return value->positiveNumber(expected);
+}
+
+/// MoveIt's joint_limits.yaml as moveit_setup_assistant writes it, or just the two limits we use.
+/// Position, jerk and effort limits and the default scaling factors are read for their form only:
+/// positions come from the URDF, the timing has no jerk or effort limit, and the speed scaling is
+/// `pmdplan time`'s --velocity-scale / --acceleration-scale (docs/trajectories.md).
 std::map<std::string, FileLimit> readLimitsFile(const RobotModel& robot, const std::filesystem::path& path) {
   const YamlField root(path.string(), parseYamlDocument(readTextFile(path), path.string()));
-  root.requireMapWithKeys({"joint_limits"}, "a joint-limits file");
+  root.requireMapWithKeys({"joint_limits", "default_velocity_scaling_factor", "default_acceleration_scaling_factor"},
+                          "a joint-limits file");
+  for (const char* factor : {"default_velocity_scaling_factor", "default_acceleration_scaling_factor"})
+    if (const auto value = root.optionalChild(factor)) value->positiveNumber("a positive scaling factor");
   std::map<std::string, FileLimit> limits;
   for (const auto& [name, entry] : root.child("joint_limits", "a map of joint names").mapEntries("a map of joints")) {
     const int index = robot.jointIndex(name);
     if (index < 0 || robot.joints()[static_cast<std::size_t>(index)].type == JointType::Fixed)
       entry.fail("'" + name + "' is not a moving joint of robot " + robot.name());
-    entry.requireMapWithKeys({"max_velocity", "max_acceleration"}, "{max_velocity, max_acceleration}");
-    FileLimit limit;
-    if (const auto velocity = entry.optionalChild("max_velocity"))
-      limit.velocity = velocity->positiveNumber("a positive velocity");
-    if (const auto acceleration = entry.optionalChild("max_acceleration"))
-      limit.acceleration = acceleration->positiveNumber("a positive acceleration");
-    limits[name] = limit;
+    entry.requireMapWithKeys(
+        {"has_velocity_limits", "max_velocity", "has_acceleration_limits", "max_acceleration", "has_position_limits",
+         "min_position", "max_position", "has_jerk_limits", "max_jerk", "has_effort_limits", "max_effort"},
+        "{max_velocity, max_acceleration} (MoveIt's joint_limits.yaml keys)");
+    for (const char* flag : {"has_position_limits", "has_jerk_limits", "has_effort_limits"})
+      if (const auto value = entry.optionalChild(flag)) value->boolean(flag);
+    for (const char* number : {"min_position", "max_position", "max_jerk", "max_effort"})
+      if (const auto value = entry.optionalChild(number)) value->number("a number");
+    limits[name] = {limitOf(entry, "velocity", "a positive velocity"),
+                    limitOf(entry, "acceleration", "a positive acceleration")};
   }
   return limits;
 }

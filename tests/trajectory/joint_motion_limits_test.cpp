@@ -39,6 +39,30 @@ TEST(JointMotionLimits, TheFileBesideTheUrdfGivesAccelerationsAndLowersVelocitie
   EXPECT_DOUBLE_EQ(limits[0].acceleration, 0.5);
 }
 
+TEST(JointMotionLimits, MoveItsJointLimitsFileIsReadAsItShips) {
+  test::TempDir dir;
+  const RobotModel robot = RobotModel::load(dir.write("two.urdf", kUrdf));
+  // The shape moveit_setup_assistant writes: scaling factors, every has_*/max_* pair, limits off
+  // written as 0.
+  const auto file = dir.write("joint_limits.yaml",
+                              "default_velocity_scaling_factor: 0.1\ndefault_acceleration_scaling_factor: 0.1\n"
+                              "joint_limits:\n  lead:\n    has_velocity_limits: true\n    max_velocity: 1.5\n"
+                              "    has_acceleration_limits: true\n    max_acceleration: 0.5\n"
+                              "    has_jerk_limits: false\n    max_jerk: 0\n    has_effort_limits: false\n"
+                              "    max_effort: 0\n  follower:\n    has_velocity_limits: true\n    max_velocity: 4\n"
+                              "    has_acceleration_limits: false\n    max_acceleration: 0\n");
+  const auto limits = jointMotionLimits(robot, file);
+  EXPECT_DOUBLE_EQ(limits[0].velocity, 1.5);
+  EXPECT_DOUBLE_EQ(limits[0].acceleration, 0.5);  // the follower's "no limit" leaves the lead's own
+  const auto missing = dir.write("m.yaml", "joint_limits:\n  lead: {has_acceleration_limits: true}\n");
+  try {
+    jointMotionLimits(robot, missing);
+    ADD_FAILURE() << "accepted a limit flagged on without its value";
+  } catch (const InputError& error) {
+    EXPECT_NE(error.message().find("max_acceleration is missing"), std::string::npos) << error.message();
+  }
+}
+
 TEST(JointMotionLimits, BadFilesNameTheKey) {
   test::TempDir dir;
   const RobotModel robot = RobotModel::load(dir.write("two.urdf", kUrdf));
@@ -54,7 +78,9 @@ TEST(JointMotionLimits, BadFilesNameTheKey) {
   };
   expectKey("joint_limits:\n  nope: {max_acceleration: 1}\n", "joint_limits.nope");
   expectKey("joint_limits:\n  lead: {max_acceleration: 0}\n", "joint_limits.lead.max_acceleration");
-  expectKey("joint_limits:\n  lead: {max_jerk: 1}\n", "lead");
+  expectKey("joint_limits:\n  lead: {max_speed: 1}\n", "lead.max_speed");
+  expectKey("joint_limits:\n  lead: {has_velocity_limits: yes, max_velocity: 1}\n", "lead.has_velocity_limits");
+  expectKey("default_velocity_scaling_factor: 2x\njoint_limits: {}\n", "default_velocity_scaling_factor");
   EXPECT_THROW(jointMotionLimits(robot, dir.path() / "missing.yaml"), InputError);
 }
 
