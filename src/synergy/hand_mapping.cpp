@@ -7,12 +7,10 @@
 #include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
-namespace {
-std::string ruleField(const JointRule& rule) {
+std::string jointRuleField(const JointRule& rule) {
   return rule.sourceLine > 0 ? "line " + std::to_string(rule.sourceLine) + " (joint " + rule.joint + ")"
                              : "joint " + rule.joint;
 }
-}  // namespace
 
 std::vector<const JointRule*> rulesForJoints(const HandMapping& mapping, const JointLimits& handJoints) {
   std::vector<const JointRule*> rules(handJoints.size(), nullptr);
@@ -22,19 +20,19 @@ std::vector<const JointRule*> rulesForJoints(const HandMapping& mapping, const J
     if (joint == handJoints.end()) {
       std::string names;
       for (const auto& limit : handJoints) names += (names.empty() ? "" : ", ") + limit.name;
-      throw InputError(mapping.sourceFile, ruleField(rule),
+      throw InputError(mapping.sourceFile, jointRuleField(rule),
                        "unknown joint '" + rule.joint + "'; the robot's hand joints are " + names);
     }
     const auto index = static_cast<std::size_t>(joint - handJoints.begin());
     if (rules[index] != nullptr)
-      throw InputError(mapping.sourceFile, ruleField(rule), "a second rule for joint " + rule.joint);
+      throw InputError(mapping.sourceFile, jointRuleField(rule), "a second rule for joint " + rule.joint);
     if (rule.isConstant() && (rule.offset < joint->lower || rule.offset > joint->upper))
-      throw InputError(mapping.sourceFile, ruleField(rule),
+      throw InputError(mapping.sourceFile, jointRuleField(rule),
                        "constant " + exactNumberText(rule.offset) + " rad is outside the joint's limits [" +
                            exactNumberText(joint->lower) + ", " + exactNumberText(joint->upper) + "] rad");
     for (const SensorTerm& term : rule.terms)
       if (term.sensor < 0 || term.sensor >= kCyberGloveSensorCount)
-        throw InputError(mapping.sourceFile, ruleField(rule), "sensor index out of range");
+        throw InputError(mapping.sourceFile, jointRuleField(rule), "sensor index out of range");
     rules[index] = &rule;
   }
   for (std::size_t j = 0; j < rules.size(); ++j)

@@ -17,7 +17,7 @@ JointRule readRule(const YamlField& node) {
   JointRule rule;
   rule.sourceLine = node.line();
   rule.joint = node.child("joint", "a joint name").text("a joint name");
-  const std::string where = "line " + std::to_string(rule.sourceLine) + " (joint " + rule.joint + ")";
+  const std::string where = jointRuleField(rule);
   const std::optional<YamlField> sensors = node.optionalChild("sensors");
   const std::optional<YamlField> constant = node.optionalChild("constant");
   const std::optional<YamlField> offset = node.optionalChild("offset");
@@ -54,7 +54,7 @@ HandMapping parseHandMapping(std::string_view text, const std::string& file) {
     JointRule rule = readRule(node);
     for (const JointRule& earlier : mapping.rules)
       if (earlier.joint == rule.joint)
-        throw InputError(file, "line " + std::to_string(rule.sourceLine) + " (joint " + rule.joint + ")",
+        throw InputError(file, jointRuleField(rule),
                          "joint listed twice (first on line " + std::to_string(earlier.sourceLine) + ")");
     mapping.rules.push_back(std::move(rule));
   }

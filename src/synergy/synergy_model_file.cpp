@@ -133,8 +133,8 @@ SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
   if (const auto provenance = root.optionalChild("provenance"))
     model.provenance = provenance->text("a provenance text");
 
-  const std::vector<YamlField> joints =
-      root.child("joints", "a list of {name, lower, upper}").elements("a list of joints");
+  const YamlField jointList = root.child("joints", "a list of {name, lower, upper}");
+  const std::vector<YamlField> joints = jointList.elements("a list of joints");
   for (const YamlField& joint : joints) {
     joint.requireMapWithKeys({"name", "lower", "upper"}, "{name, lower, upper}");
     model.joints.push_back({joint.child("name", "a joint name").text("a joint name"),
@@ -150,8 +150,8 @@ SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
   const YamlField mean = root.child("mean", "a list of normalised joint values");
   model.mean = numberList(mean, "normalised joint values");
 
-  const std::vector<YamlField> directions =
-      root.child("directions", "a list of {sigma, variance_fraction, vector}").elements("a list of directions");
+  const YamlField directionList = root.child("directions", "a list of {sigma, variance_fraction, vector}");
+  const std::vector<YamlField> directions = directionList.elements("a list of directions");
   const auto count = static_cast<Eigen::Index>(directions.size());
   model.directions = Eigen::MatrixXd::Zero(model.jointCount(), count);
   model.sigma.resize(count);
@@ -176,14 +176,14 @@ SynergyModel parseSynergyModel(std::string_view text, const std::string& file) {
   validate(model, file, [&](Part part, int index) {
     switch (part) {
       case Part::Joints:
-        return item(joints, root.child("joints", ""), index);
+        return item(joints, jointList, index);
       case Part::Mean:
         return mean.location();
       case Part::OwnAxis:
         if (ownAxis) return ownAxis->location();
         break;
       case Part::Direction:
-        return item(directions, root.child("directions", ""), index);
+        return item(directions, directionList, index);
     }
     return defaultLocation(part, index);
   });

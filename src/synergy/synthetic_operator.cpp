@@ -122,7 +122,7 @@ SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& 
         std::find_if(mapping.rules.begin(), mapping.rules.end(), [&](const JointRule& x) { return x.joint == joint; });
     if (rule == mapping.rules.end())
       throw InputError(mapping.sourceFile, "joints", "the synthetic operator needs a rule for joint " + joint);
-    const std::string where = "line " + std::to_string(rule->sourceLine) + " (joint " + joint + ")";
+    const std::string where = jointRuleField(*rule);
     if (rule->terms.size() != 1 || rule->terms.front().gain == 0)
       throw InputError(
           mapping.sourceFile, where,

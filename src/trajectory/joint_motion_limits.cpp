@@ -5,7 +5,6 @@
 #include <map>
 
 #include "pmdplan/core/atomic_file.hpp"
-#include "pmdplan/core/input_error.hpp"
 #include "pmdplan/text/yaml_field.hpp"
 
 namespace pmdplan {
@@ -19,11 +18,12 @@ struct FileLimit {
 /// A limit of a MoveIt-style entry: `max_<what>` applies unless `has_<what>_limits` is false (MoveIt
 /// writes `has_acceleration_limits: false` with `max_acceleration: 0`, meaning none).
 std::optional<double> limitOf(const YamlField& entry, const std::string& what, const std::string& expected) {
-  const auto flag = entry.optionalChild("has_" + what + "_limits");
-  const auto value = entry.optionalChild("max_" + what);
-  if (flag && !flag->boolean("has_" + what + "_limits")) return std::nullopt;
+  const std::string flagKey = "has_" + what + "_limits", valueKey = "max_" + what;
+  const auto flag = entry.optionalChild(flagKey);
+  const auto value = entry.optionalChild(valueKey);
+  if (flag && !flag->boolean(flagKey)) return std::nullopt;
   if (!value) {
-    if (flag) entry.fail("has_" + what + "_limits is true but max_" + what + " is missing");
+    if (flag) entry.fail(flagKey + " is true but " + valueKey + " is missing");
     return std::nullopt;
   }
   return value->positiveNumber(expected);

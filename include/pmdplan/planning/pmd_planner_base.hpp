@@ -4,6 +4,7 @@
 // sampler, the parameters, c_ini and c_goal with the arm sampler along their segment), one run's
 // random source and clock, and its results (the path before and after smoothing, the statistics).
 // A planner adds its roadmap and its solve().
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>

@@ -25,6 +25,10 @@ struct JointRule {
   bool isConstant() const { return terms.empty(); }
 };
 
+/// Where a rule is, for the InputError field: "line N (joint NAME)", or "joint NAME" for a rule
+/// not read from a file.
+std::string jointRuleField(const JointRule& rule);
+
 struct HandMapping {
   std::vector<JointRule> rules;
   std::string description;
