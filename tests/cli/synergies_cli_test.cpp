@@ -99,6 +99,15 @@ TEST_F(PaperSizedSyntheticRecording, RegeneratesTheShippedDefaultModelByteForByt
   EXPECT_EQ(contents(model), contents(kData / "synergies" / "sah_tx90_default.yaml"));
 }
 
+// data/synergies/regenerate-panda-allegro.sh: the same recording mapped onto the Allegro Hand.
+TEST_F(PaperSizedSyntheticRecording, RegeneratesTheShippedPandaAllegroModelByteForByte) {
+  const auto model = dir_->path() / "panda_allegro.yaml";
+  const auto run = runCli(*dir_, "synergies " + quoted(recording_) + " --robot panda_allegro --mapping " +
+                                     quoted(kData / "glove" / "cyberglove22_to_allegro.yaml") + " -o " + quoted(model));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(contents(model), contents(kData / "synergies" / "panda_allegro_default.yaml"));
+}
+
 TEST(SynergiesCli, TheSerialStreamGivesTheSameModelAsTheCsv) {
   test::TempDir dir;
   const auto stream = dir.path() / "sample.bin";
