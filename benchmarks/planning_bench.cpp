@@ -1,6 +1,8 @@
 // The PMD planner on the five paper tasks, planning only (no validation, no process per run):
-// every iteration is one seeded run (seed 1, 2, ...), on the fast or the exact checker; and the
-// lazy PMD planner (`plan-lazy/...`, fast checker). Prints the time per run and, after the table,
+// every iteration is one seeded run (seed 1, 2, ...), on the fast or the exact checker; our lazy
+// and bidirectional PMD planners (`plan-lazy/...`, `plan-connect/...`, fast checker); all three
+// again on the fast checker with the Halton and the SDK sequence (`.../fast/halton`,
+// `.../fast/sdk`; `--sequence`). Prints the time per run and, after the table,
 // each task's median and 90th percentile over the runs made, with the median time to certify the
 // returned path (a motion check of each of its approach edges, same checker) and the median of
 // planning time / certification time; the thing to profile (`perf record build/benchmarks/planning_bench
@@ -15,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pmdplan/core/data_directory.hpp"
@@ -51,12 +54,24 @@ double certificationSeconds(const TaskPlanningResult& result, MotionValidator& m
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 }
 
+/// The benchmark name's first part for each of our planners.
+const std::vector<std::pair<std::string, RoadmapAlgorithm>> kPlanners = {{"plan", RoadmapAlgorithm::Paper},
+                                                                         {"plan-lazy", RoadmapAlgorithm::Lazy},
+                                                                         {"plan-connect", RoadmapAlgorithm::Connect}};
+
+std::string prefixOf(RoadmapAlgorithm algorithm) {
+  for (const auto& [prefix, known] : kPlanners)
+    if (known == algorithm) return prefix;
+  return "?";
+}
+
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   return values[values.size() / 2];
 }
 
-void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind, RoadmapAlgorithm algorithm) {
+void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind, RoadmapAlgorithm algorithm,
+              SampleSequence sequence) {
   TaskRuns d;
   d.task = loadTaskByName(name);
   d.synergies = loadSynergyModel(dataDirectory() / "synergies" / (d.task.robot->name() + "_default.yaml"));
@@ -64,9 +79,11 @@ void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind
   TaskPlanningOptions options;
   options.algorithm = algorithm;
   options.synergies = &d.synergies;
+  options.parameters.sequence = sequence;
   std::uint64_t seed = 1;
   std::size_t solved = 0, samples = 0, nodes = 0, motionStates = 0;
-  const std::string label = (algorithm == RoadmapAlgorithm::Lazy ? "lazy/" : "") + name + "/" + checkerKindName(kind);
+  const std::string label = prefixOf(algorithm) + "/" + name + "/" + checkerKindName(kind) +
+                            (sequence == SampleSequence::Random ? "" : "/" + sampleSequenceName(sequence));
   auto& times = planningTimes()[label];
   auto& certifications = certificationTimes()[label];
   times.clear();  // the framework calls again with more iterations: keep the last call's runs
@@ -99,18 +116,24 @@ int main(int argc, char** argv) {
   for (const auto& name : kTasks)
     for (const CheckerKind kind : {CheckerKind::Fast, CheckerKind::Exact})
       benchmark::RegisterBenchmark(("plan/" + name + "/" + checkerKindName(kind)).c_str(), [=](benchmark::State& s) {
-        planRuns(s, name, kind, RoadmapAlgorithm::Paper);
+        planRuns(s, name, kind, RoadmapAlgorithm::Paper, SampleSequence::Random);
       })->Unit(benchmark::kMillisecond);
-  for (const auto& name : kTasks)
-    benchmark::RegisterBenchmark(("plan-lazy/" + name + "/fast").c_str(), [=](benchmark::State& s) {
-      planRuns(s, name, CheckerKind::Fast, RoadmapAlgorithm::Lazy);
-    })->Unit(benchmark::kMillisecond);
+  for (const auto& [prefix, algorithm] : kPlanners)
+    for (const SampleSequence sequence : {SampleSequence::Random, SampleSequence::Halton, SampleSequence::Sdk})
+      for (const auto& name : kTasks) {
+        if (algorithm == RoadmapAlgorithm::Paper && sequence == SampleSequence::Random) continue;  // above
+        const std::string suffix = sequence == SampleSequence::Random ? "" : "/" + sampleSequenceName(sequence);
+        benchmark::RegisterBenchmark((prefix + "/" + name + "/fast" + suffix).c_str(), [=, algorithm = algorithm](
+                                                                                           benchmark::State& s) {
+          planRuns(s, name, CheckerKind::Fast, algorithm, sequence);
+        })->Unit(benchmark::kMillisecond);
+      }
   benchmark::RunSpecifiedBenchmarks();
   std::printf("\nplanning time over the runs made (seeds 1..n)\n");
   for (auto& [label, times] : planningTimes()) {
     if (times.empty()) continue;
     std::sort(times.begin(), times.end());
-    std::printf("  %-28s runs %5zu  median %9.3f ms  p90 %9.3f ms", label.c_str(), times.size(),
+    std::printf("  %-36s runs %5zu  median %9.3f ms  p90 %9.3f ms", label.c_str(), times.size(),
                 1e3 * times[times.size() / 2], 1e3 * times[times.size() * 9 / 10]);
     const std::vector<double>& certifications = certificationTimes()[label];
     if (!certifications.empty())

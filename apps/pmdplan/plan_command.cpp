@@ -29,7 +29,7 @@
 namespace pmdplan::cli {
 namespace {
 
-/// "pmd, full, pmd-lazy": the roster's planners of ours, which `plan` runs.
+/// "pmd, full, pmd-lazy, pmd-connect": the roster's planners of ours, which `plan` runs.
 std::string ourPlannerNames() {
   std::string names;
   for (const PlannerEntry& entry : plannerRoster())
@@ -152,8 +152,8 @@ const CommandRegistrar registrar{
       addPackagePathOption(app);
       app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
       app.add_option("--planner", o->planner,
-                     "pmd (the paper's planner), full (hands sampled over the whole joint box) or pmd-lazy (our "
-                     "lazy PMD roadmap, docs/planners.md)");
+                     "pmd (the paper's planner), full (hands sampled over the whole joint box), pmd-lazy (our "
+                     "lazy PMD roadmap) or pmd-connect (our bidirectional PMD trees; docs/planners.md)");
       app.add_option(
           "--checker", o->checker,
           "fast (default: convex parts and lane kernels, FCL only near contact; the same answers) or exact (FCL only)");

@@ -115,6 +115,11 @@ class PlannerSettings:
     lazy_radius: float
     lazy_probes: int
     lazy_arm_growth: float
+    sequence: str
+    connect_range: float
+    connect_round: int
+    connect_arm_growth: float
+    connect_probes: int
     def __init__(self, planner: str = "pmd") -> None: ...
     def check(self) -> None: ...
 

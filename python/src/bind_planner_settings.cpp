@@ -3,12 +3,14 @@
 // parameter struct is adapted here alone.
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <sstream>
 
 #include "bindings.hpp"
 #include "planner_settings.hpp"
 #include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/sequences/sample_sequence.hpp"
 
 namespace pmdplan::python {
 namespace {
@@ -24,7 +26,8 @@ ArmBoxGrowth growthFrom(const std::string& name) {
 HandSamplingMode modeFrom(const std::string& planner) {
   const auto entry = findPlanner(planner);
   if (!entry || entry->family != PlannerFamily::PmdRoadmap)
-    throw InputError("", "--planner", "'" + planner + "' is not a planner; expected pmd, full or pmd-lazy");
+    throw InputError("", "--planner",
+                     "'" + planner + "' is not a planner; expected pmd, full, pmd-lazy or pmd-connect");
   return entry->mode;
 }
 
@@ -62,7 +65,7 @@ void bindPlannerSettings(py::module_& m) {
                                 "Settings of the PMD roadmap planner (Algorithm 4); defaults from the paper's Table 3.")
       .def(py::init([](const std::string& planner) { return PlannerParameters::defaultsFor(modeFrom(planner)); }),
            py::arg("planner") = "pmd",
-           "Table 3's values for planner 'pmd' or 'pmd-lazy' (n_A = n_H = 10) or 'full' (20).")
+           "Table 3's values for planner 'pmd', 'pmd-lazy' or 'pmd-connect' (n_A = n_H = 10) or 'full' (20).")
       .def_readwrite("initial_arm_half_size", &PlannerParameters::initialArmHalfSize,
                      "rho_a: initial half-size of the arm hypercubes, normalised units (Table 3: 0.001).")
       .def_property(
@@ -110,6 +113,32 @@ void bindPlannerSettings(py::module_& m) {
           "lazy_arm_growth", [](const PlannerParameters& p) { return p.lazy.armGrowth; },
           [](PlannerParameters& p, double v) { p.lazy.armGrowth = v; },
           "pmd-lazy: rho_a is multiplied by this after each round without a path (2).")
+      .def_property(
+          "sequence", [](const PlannerParameters& p) { return sampleSequenceName(p.sequence); },
+          [](PlannerParameters& p, const std::string& name) {
+            const std::optional<SampleSequence> sequence = parseSampleSequence(name);
+            if (!sequence)
+              throw InputError("", "--sequence",
+                               "'" + name + "' is not a sample sequence; expected " + knownSampleSequenceNames());
+            p.sequence = *sequence;
+          },
+          "Where the samplers' numbers come from: 'random' (default), 'halton' or 'sdk'.")
+      .def_property(
+          "connect_range", [](const PlannerParameters& p) { return p.connect.rangeFactor; },
+          [](PlannerParameters& p, double v) { p.connect.rangeFactor = v; },
+          "pmd-connect: longest tree step, as a multiple of d(start, goal) (1; inf: none).")
+      .def_property(
+          "connect_round", [](const PlannerParameters& p) { return p.connect.roundSamples; },
+          [](PlannerParameters& p, std::size_t v) { p.connect.roundSamples = v; },
+          "pmd-connect: samples per round; the arm region grows after each round that left the trees apart (2).")
+      .def_property(
+          "connect_arm_growth", [](const PlannerParameters& p) { return p.connect.armGrowth; },
+          [](PlannerParameters& p, double v) { p.connect.armGrowth = v; },
+          "pmd-connect: factor of the arm region's largest half-size after each such round (8).")
+      .def_property(
+          "connect_probes", [](const PlannerParameters& p) { return p.connect.probes; },
+          [](PlannerParameters& p, std::size_t v) { p.connect.probes = v; },
+          "pmd-connect: inner states of a new tree step checked before it joins its tree (4).")
       .def("check", &checkPlannerParameters, "Raises InputError (the CLI's message) for a value out of range.")
       .def("__repr__", [](const PlannerParameters& p) {
         std::ostringstream text;

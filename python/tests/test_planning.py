@@ -28,8 +28,8 @@ def test_pmd_plan_gives_the_clis_path_for_the_same_seed(can_on_table, tmp_path, 
 
 
 def test_every_planner_kind_solves_can_on_table(can_on_table):
-    assert set(["pmd", "full", "pmd-lazy", "ompl:RRTConnect"]) <= set(pmdplan.planners())
-    for planner in ("full", "pmd-lazy", "ompl:RRTConnect"):
+    assert set(["pmd", "full", "pmd-lazy", "pmd-connect", "ompl:RRTConnect"]) <= set(pmdplan.planners())
+    for planner in ("full", "pmd-lazy", "pmd-connect", "ompl:RRTConnect"):
         result = pmdplan.plan(can_on_table, planner, seed=1, time_limit=30)
         assert result.solved, planner
         assert result.planner == planner
@@ -63,6 +63,24 @@ def test_lazy_settings_reach_the_lazy_planner(can_on_table):
     settings.lazy_radius = 0.0
     with pytest.raises(pmdplan.InputError, match="--lazy-radius"):
         pmdplan.plan(can_on_table, "pmd-lazy", settings=settings)
+
+
+def test_connect_and_sequence_settings_reach_the_bidirectional_planner(can_on_table):
+    settings = pmdplan.PlannerSettings("pmd-connect")
+    assert settings.connect_round == 2 and settings.connect_probes == 4 and settings.sequence == "random"
+    settings.sequence = "halton"
+    first = pmdplan.plan(can_on_table, "pmd-connect", settings=settings, seed=3)
+    again = pmdplan.plan(can_on_table, "pmd-connect", settings=settings, seed=3)
+    assert first.solved
+    np.testing.assert_array_equal(first.path, again.path)
+    settings.sequence = "random"
+    other = pmdplan.plan(can_on_table, "pmd-connect", settings=settings, seed=3)
+    assert other.solved and not np.array_equal(first.path, other.path)
+    with pytest.raises(pmdplan.InputError, match="--sequence"):
+        settings.sequence = "sobol"
+    settings.connect_arm_growth = 0.5
+    with pytest.raises(pmdplan.InputError, match="--connect-arm-growth"):
+        pmdplan.plan(can_on_table, "pmd-connect", settings=settings)
 
 
 def test_sample_limit_is_a_status_not_an_error(can_on_table):

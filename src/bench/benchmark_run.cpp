@@ -1,5 +1,6 @@
 #include "pmdplan/bench/benchmark_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "pmdplan/bench/human_likeness.hpp"
@@ -59,7 +60,7 @@ RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord recor
                   PathFile* path) {
   const Task& task = bench.task();
   MotionValidator& motions = bench.checking().motions();
-  const OmplPmdSampling pmdSampling{&bench.synergies(), parameters.pmdBox, parameters.initialArmHalfSize};
+  const OmplPmdSampling pmdSampling{&bench.synergies(), parameters};
   const OmplPlanningResult result =
       planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions, task.start, task.goal,
                    parameters.timeLimit, record.seed, planner.pmdSampling ? &pmdSampling : nullptr);
@@ -97,6 +98,13 @@ RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run,
 
 void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record,
                 std::optional<std::size_t> closingFrom) {
+  MotionValidator& motions = bench.checking().motions();
+  // The approach: every point up to the pre-grasp (closingFrom), or the whole path.
+  const std::size_t approachEnd = std::min(closingFrom ? *closingFrom + 1 : path.size(), path.size());
+  const auto certificationBegan = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i + 1 < approachEnd; ++i) motions.isValid(path[i], path[i + 1]);
+  record.certificationTimeSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - certificationBegan).count();
   record.pathNodes = path.size();
   record.pathLength = path.empty() ? 0.0 : pathLength(path, bench.space());
   if (!path.empty())

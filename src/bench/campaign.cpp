@@ -40,13 +40,14 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options) {
   std::vector<Task> tasks;
   for (const auto& name : options.tasks) tasks.push_back(loadTaskByName(name));
   CampaignInputs inputs;
-  const std::filesystem::path file =
-      options.synergies.empty() ? shippedSynergyModelPath(tasks.front().robot->name()) : options.synergies;
-  inputs.synergies = std::make_unique<SynergyModel>(loadSynergyModel(file));
-  inputs.synergyFile = file.string();
-  for (Task& task : tasks)
-    inputs.tasks.push_back(std::make_unique<TaskBench>(std::move(task), options.checker, options.toleranceMetres,
-                                                       *inputs.synergies, inputs.synergyFile));
+  for (Task& task : tasks) {
+    const std::string file =
+        (options.synergies.empty() ? shippedSynergyModelPath(task.robot->name()) : options.synergies).string();
+    auto& model = inputs.synergies[file];
+    if (!model) model = std::make_unique<SynergyModel>(loadSynergyModel(file));
+    inputs.tasks.push_back(
+        std::make_unique<TaskBench>(std::move(task), options.checker, options.toleranceMetres, *model, file));
+  }
   return inputs;
 }
 

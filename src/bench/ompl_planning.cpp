@@ -73,8 +73,8 @@ OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSp
   const ob::SpaceInformationPtr& si = taskSpace.spaceInformation;
   if (pmdSampling) {
     std::shared_ptr<const HandSampler> hands =
-        makeHandSampler(HandSamplingMode::Synergy, space, pmdSampling->synergies, pmdSampling->pmdBox);
-    installPmdStateSampler(*si->getStateSpace(), space, hands, start, goal, pmdSampling->initialArmHalfSize);
+        makeHandSampler(HandSamplingMode::Synergy, space, pmdSampling->synergies, pmdSampling->parameters.pmdBox);
+    installPmdStateSampler(*si->getStateSpace(), space, hands, start, goal, pmdSampling->parameters);
   }
 
   ob::ScopedState<> startState(si), goalState(si);

@@ -1,7 +1,6 @@
 #include "ompl_pmd_state_sampler.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "ompl_checker_adapters.hpp"
@@ -12,25 +11,25 @@ namespace ob = ompl::base;
 
 OmplPmdStateSampler::OmplPmdStateSampler(const ob::StateSpace* stateSpace, const PlanningSpace& space,
                                          std::shared_ptr<const HandSampler> hands, const Configuration& start,
-                                         const Configuration& goal, double initialArmHalfSize)
+                                         const Configuration& goal, const PlannerParameters& parameters)
     : ob::StateSampler(stateSpace),
       space_(space),
       hands_(std::move(hands)),
       arms_(space, start, goal),
       centre_(start),
-      initialArmHalfSize_(initialArmHalfSize),
-      random_(static_cast<std::uint64_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()))),
+      scales_(parameters.initialArmHalfSize, parameters.connect.armGrowth),
+      roundSamples_(parameters.connect.roundSamples),
+      points_(parameters.sequence, static_cast<std::uint64_t>(rng_.uniformInt(1, std::numeric_limits<int>::max())),
+              {hands_->maxDimension(), arms_.dimension(), 2}),
       uniform_(stateSpace) {}
-
-double OmplPmdStateSampler::armHalfSize() const {
-  return std::min(1.0, initialArmHalfSize_ * std::exp2(static_cast<double>(draws_) / kDrawsPerDoubling));
-}
 
 void OmplPmdStateSampler::sampleUniform(ob::State* state) {
   Configuration q = centre_;
-  hands_->sample(hands_->maxDimension(), random_, q);
-  arms_.draw(random_.uniform01(), armHalfSize(), random_, q);
-  ++draws_;
+  hands_->sample(hands_->maxDimension(), points_, q);
+  double point[2];  // where on the segment, and the box's scale
+  points_.next(PointStream::SegmentPoint, 2, point);
+  arms_.draw(point[0], scales_.halfSize(point[1]), points_, q);
+  if (++draws_ % roundSamples_ == 0) scales_.grow();
   setStateFromConfiguration(space_, q, state);
 }
 
@@ -44,9 +43,9 @@ void OmplPmdStateSampler::sampleGaussian(ob::State* state, const ob::State* mean
 
 void installPmdStateSampler(ob::StateSpace& stateSpace, const PlanningSpace& space,
                             std::shared_ptr<const HandSampler> hands, const Configuration& start,
-                            const Configuration& goal, double initialArmHalfSize) {
-  stateSpace.setStateSamplerAllocator([&space, hands, start, goal, initialArmHalfSize](const ob::StateSpace* s) {
-    return std::make_shared<OmplPmdStateSampler>(s, space, hands, start, goal, initialArmHalfSize);
+                            const Configuration& goal, const PlannerParameters& parameters) {
+  stateSpace.setStateSamplerAllocator([&space, hands, start, goal, parameters](const ob::StateSpace* s) {
+    return std::make_shared<OmplPmdStateSampler>(s, space, hands, start, goal, parameters);
   });
 }
 

@@ -4,46 +4,49 @@
 // over its range + every PMD the model has, up to the max-PMDs setting, i.e. the sampler's
 // maxDimension; the dimension does not grow, OMPL planners have no per-sample failure signal) and
 // whose arm is drawn by ArmSegmentSampler around a point uniform on the start-goal arm segment,
-// within a hypercube of half-size rho_a(k) = min(1, rho_a · 2^(k / kDrawsPerDoubling)) after k
-// draws (rho_a: PlannerParameters::initialArmHalfSize), so the region grows with the draws as our
-// planner's sweeps grow it. Deterministic: our RandomSource is seeded from the sampler's ompl::RNG
-// (ompl::RNG::setSeed). sampleUniformNear and sampleGaussian are the uniform space's (clamped to
+// within a hypercube whose half-size is pmd-connect's (arm_box_scales.hpp): log-uniform between
+// rho_a and a largest half-size that grows by connect-arm-growth every connect-round draws (OMPL's
+// planners do not say when their trees stay apart, so the region grows with the draws). The hand
+// point, the segment point and scale and the arm point of a draw come from
+// the chosen sequence (PlannerParameters::sequence), seeded from the sampler's ompl::RNG
+// (ompl::RNG::setSeed): deterministic. sampleUniformNear and sampleGaussian are the uniform space's (clamped to
 // the box) around the given state.
 #include <ompl/base/StateSampler.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
 #include <memory>
 
-#include "pmdplan/core/random_source.hpp"
+#include "pmdplan/core/sequences/unit_points.hpp"
+#include "pmdplan/planning/arm_box_scales.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
+#include "pmdplan/planning/planner_parameters.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 
 namespace pmdplan {
 
 class OmplPmdStateSampler final : public ompl::base::StateSampler {
  public:
-  static constexpr double kDrawsPerDoubling = 200.0;
-
   /// `space` and `hands` are shared with the caller and must outlive the sampler.
   OmplPmdStateSampler(const ompl::base::StateSpace* stateSpace, const PlanningSpace& space,
                       std::shared_ptr<const HandSampler> hands, const Configuration& start, const Configuration& goal,
-                      double initialArmHalfSize);
+                      const PlannerParameters& parameters);
 
   void sampleUniform(ompl::base::State* state) override;
   void sampleUniformNear(ompl::base::State* state, const ompl::base::State* near, double distance) override;
   void sampleGaussian(ompl::base::State* state, const ompl::base::State* mean, double stdDev) override;
 
-  /// rho_a of the next draw.
-  double armHalfSize() const;
+  /// The arm region's largest half-size at the next draw.
+  double largestArmHalfSize() const { return scales_.largest(); }
 
  private:
   const PlanningSpace& space_;
   std::shared_ptr<const HandSampler> hands_;
   ArmSegmentSampler arms_;
   Configuration centre_;  ///< start; its hand entries are overwritten by every draw
-  double initialArmHalfSize_;
-  RandomSource random_;
+  ArmBoxScales scales_;
+  std::size_t roundSamples_;
+  UnitPoints points_;
   std::size_t draws_ = 0;
   ompl::base::RealVectorStateSampler uniform_;
 };
@@ -52,6 +55,6 @@ class OmplPmdStateSampler final : public ompl::base::StateSampler {
 /// samplers included, then draw from it).
 void installPmdStateSampler(ompl::base::StateSpace& stateSpace, const PlanningSpace& space,
                             std::shared_ptr<const HandSampler> hands, const Configuration& start,
-                            const Configuration& goal, double initialArmHalfSize);
+                            const Configuration& goal, const PlannerParameters& parameters);
 
 }  // namespace pmdplan

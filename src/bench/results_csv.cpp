@@ -16,13 +16,14 @@ std::string number(double value) {
 }  // namespace
 
 const std::vector<std::string>& timingCsvColumns() {
-  static const std::vector<std::string> columns = {"planning_time_s", "smoothing_time_s"};
+  static const std::vector<std::string> columns = {"planning_time_s", "smoothing_time_s", "certification_time_s"};
   return columns;
 }
 
 std::string runRecordsCsv(const std::vector<RunRecord>& records) {
   std::string csv =
-      "task,planner,run,seed,solved,planning_time_s,smoothing_time_s,valid,samples,arm_trials,max_trials,final_rho_a,"
+      "task,planner,run,seed,solved,planning_time_s,smoothing_time_s,certification_time_s,valid,samples,arm_trials,max_"
+      "trials,final_rho_a,"
       "nodes_by_hand_dimension,roadmap_nodes,path_nodes,path_length,"
       "collision_checks,subspace_distance_mean,subspace_distance_max,mahalanobis_mean,authors_pmd_distance_mean,"
       "authors_pmd_distance_max,joint_coupling,failure\n";
@@ -32,10 +33,10 @@ std::string runRecordsCsv(const std::vector<RunRecord>& records) {
         r.humanLikeness && r.humanLikeness->independent ? &*r.humanLikeness->independent : nullptr;
     csv += csvField(r.task) + "," + csvField(r.planner) + "," + std::to_string(r.run) + "," + std::to_string(r.seed) +
            "," + (r.solved ? "1" : "0") + "," + number(r.planningTimeSeconds) + "," + number(r.smoothingTimeSeconds) +
-           "," + (r.valid ? "1" : "0") + "," + std::to_string(r.samples) + "," + std::to_string(r.armTrials) + "," +
-           std::to_string(r.maxTrials) + "," + number(r.finalArmHalfSize) + "," +
-           csvField(nodesByHandDimensionText(r.nodesByHandDimension)) + "," + std::to_string(r.roadmapNodes) + "," +
-           (hasPath ? std::to_string(r.pathNodes) : "") + "," + (hasPath ? number(r.pathLength) : "") + "," +
+           "," + number(r.certificationTimeSeconds) + "," + (r.valid ? "1" : "0") + "," + std::to_string(r.samples) +
+           "," + std::to_string(r.armTrials) + "," + std::to_string(r.maxTrials) + "," + number(r.finalArmHalfSize) +
+           "," + csvField(nodesByHandDimensionText(r.nodesByHandDimension)) + "," + std::to_string(r.roadmapNodes) +
+           "," + (hasPath ? std::to_string(r.pathNodes) : "") + "," + (hasPath ? number(r.pathLength) : "") + "," +
            std::to_string(r.collisionChecks) + "," +
            (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMean) : "") + "," +
            (r.humanLikeness ? number(r.humanLikeness->subspaceDistanceMax) : "") + "," +

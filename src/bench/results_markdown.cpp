@@ -164,6 +164,67 @@ std::string claimMarkdown(const std::vector<std::vector<RunSummary>>& byTask,
   return md;
 }
 
+/// A ratio of two positive numbers to two places, or "–".
+std::string quotient(double numerator, double denominator) {
+  if (!(numerator > 0.0) || !(denominator > 0.0)) return "–";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", numerator / denominator);
+  return text;
+}
+
+bool isOurs(const std::string& planner) {
+  return planner == "pmd" || planner == "pmd-lazy" || planner == "pmd-connect";
+}
+
+/// Each of our PMD planners (pmd, pmd-lazy, pmd-connect) on each task against the best OMPL
+/// planner: median planning times and their ratio, the time to certify the returned path and
+/// planning over it, and the synergy-subspace distance against pmd's and RRTConnect's. Only with
+/// one of ours and an OMPL planner among the planners.
+std::string targetsMarkdown(const std::vector<std::vector<RunSummary>>& byTask,
+                            const std::vector<std::string>& planners) {
+  const bool ours = std::any_of(planners.begin(), planners.end(), isOurs);
+  const bool ompl =
+      std::any_of(planners.begin(), planners.end(), [](const std::string& p) { return p.rfind("ompl:", 0) == 0; });
+  if (!ours || !ompl) return "";
+  const auto find = [&](const std::vector<RunSummary>& summaries, const std::string& name) -> const RunSummary* {
+    for (const RunSummary& s : summaries)
+      if (s.planner == name && s.succeeded > 0) return &s;
+    return nullptr;
+  };
+  std::string md =
+      "### Our planners against the best OMPL planner\n\n"
+      "| task | planner | success | median planning | best OMPL planner (median) | best OMPL / planner | "
+      "median certification | planning / certification | synergy-subspace distance, mean | planner / pmd | "
+      "RRTConnect / planner |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& summaries : byTask) {
+    const RunSummary* best = bestOmpl(summaries);
+    const RunSummary* pmd = find(summaries, "pmd");
+    const RunSummary* rrtConnect = find(summaries, "ompl:RRTConnect");
+    for (const RunSummary& s : summaries) {
+      if (!isOurs(s.planner)) continue;
+      const bool any = s.succeeded > 0;
+      md +=
+          "| " + s.task + " | " + s.planner + " | " + std::to_string(s.succeeded) + "/" + std::to_string(s.runs) + " |";
+      addCell(md, any ? shortNumber(1e3 * s.planningTime.median) + " ms" : "–");
+      addCell(md, best ? best->planner.substr(5) + " (" + shortNumber(1e3 * best->planningTime.median) + " ms)"
+                       : "none solved");
+      addCell(md, best && any ? quotient(best->planningTime.median, s.planningTime.median) : "–");
+      addCell(md, any ? shortNumber(1e3 * s.certificationTime.median) + " ms" : "–");
+      addCell(md, any ? quotient(s.planningTime.median, s.certificationTime.median) : "–");
+      addCell(md, any ? shortNumber(s.subspaceDistanceMean.mean) : "–");
+      addCell(md, pmd && any ? quotient(s.subspaceDistanceMean.mean, pmd->subspaceDistanceMean.mean) : "–");
+      addCell(md,
+              rrtConnect && any ? quotient(rrtConnect->subspaceDistanceMean.mean, s.subspaceDistanceMean.mean) : "–");
+      md += "\n";
+    }
+  }
+  md +=
+      "\nMedians over the successful runs; best OMPL / planner above 1: the planner is faster. Certification: one "
+      "motion check of each segment of the returned path (up to the pre-grasp) with the same checker, after the run. "
+      "Synergy-subspace distances: means over the successful runs.\n\n";
+  return md;
+}
+
 }  // namespace
 
 std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vector<std::string>& tasks,
@@ -171,6 +232,7 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
   const std::vector<MetricRow> rows = {
       {"planning time [s]", [](const RunSummary& s) -> const MetricSummary& { return s.planningTime; }},
       {"smoothing time [s]", [](const RunSummary& s) -> const MetricSummary& { return s.smoothingTime; }},
+      {"certification time [s]", [](const RunSummary& s) -> const MetricSummary& { return s.certificationTime; }},
       {"samples (hand-arm draws; OMPL: states checked)",
        [](const RunSummary& s) -> const MetricSummary& { return s.samples; }},
       {"arm trials", [](const RunSummary& s) -> const MetricSummary& { return s.armTrials; }},
@@ -196,7 +258,8 @@ std::string benchMarkdown(const std::vector<RunRecord>& records, const std::vect
     byTask.emplace_back();
     for (const std::string& planner : planners) byTask.back().push_back(summariseRuns(records, task, planner));
   }
-  std::string md = summaryMarkdown(byTask, planners) + claimMarkdown(byTask, planners);
+  std::string md =
+      summaryMarkdown(byTask, planners) + targetsMarkdown(byTask, planners) + claimMarkdown(byTask, planners);
   for (std::size_t t = 0; t < tasks.size(); ++t) {
     const std::string& task = tasks[t];
     const std::vector<RunSummary>& summaries = byTask[t];

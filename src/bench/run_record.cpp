@@ -158,6 +158,7 @@ const std::vector<Field<RunRecord>>& fieldsOf() {
       field("valid", &R::valid),
       field("planning_time_s", &R::planningTimeSeconds),
       field("smoothing_time_s", &R::smoothingTimeSeconds),
+      field("certification_time_s", &R::certificationTimeSeconds),
       field("samples", &R::samples),
       field("arm_trials", &R::armTrials),
       field("max_trials", &R::maxTrials),
@@ -202,10 +203,15 @@ nlohmann::ordered_json runRecordToJson(const RunRecord& record) {
 }
 
 std::optional<RunRecord> runRecordFromJson(const nlohmann::json& json, std::size_t otherKeys) {
-  if (!json.is_object() || json.size() != fieldsOf<RunRecord>().size() + otherKeys) return std::nullopt;
+  constexpr const char* kLaterKey = "certification_time_s";  // absent from older journals
+  if (!json.is_object()) return std::nullopt;
+  const bool older = !json.contains(kLaterKey);
+  if (json.size() + (older ? 1 : 0) != fieldsOf<RunRecord>().size() + otherKeys) return std::nullopt;
   RunRecord record;
-  for (const auto& f : fieldsOf<RunRecord>())
+  for (const auto& f : fieldsOf<RunRecord>()) {
+    if (older && std::string_view(f.key) == kLaterKey) continue;
     if (!json.contains(f.key) || !f.read(json.at(f.key), record)) return std::nullopt;
+  }
   return record;
 }
 

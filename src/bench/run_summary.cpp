@@ -38,6 +38,7 @@ RunSummary summariseRuns(const std::vector<RunRecord>& records, const std::strin
   };
   s.planningTime = metric([](const RunRecord& r) { return r.planningTimeSeconds; });
   s.smoothingTime = metric([](const RunRecord& r) { return r.smoothingTimeSeconds; });
+  s.certificationTime = metric([](const RunRecord& r) { return r.certificationTimeSeconds; });
   s.samples = metric([](const RunRecord& r) { return static_cast<double>(r.samples); });
   s.armTrials = metric([](const RunRecord& r) { return static_cast<double>(r.armTrials); });
   s.maxTrials = metric([](const RunRecord& r) { return static_cast<double>(r.maxTrials); });

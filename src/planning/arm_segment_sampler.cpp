@@ -22,7 +22,9 @@ ArmSegmentSampler::ArmSegmentSampler(const PlanningSpace& space, const Configura
   segmentLength_ = std::sqrt(sum);
 }
 
-void ArmSegmentSampler::draw(double step, double halfSize, RandomSource& random, Configuration& q) const {
+void ArmSegmentSampler::draw(double step, double halfSize, UnitPoints& points, Configuration& q) const {
+  std::vector<double> point(armIndices_.size());
+  points.next(PointStream::Arm, dimension(), point.data());
   for (std::size_t k = 0; k < armIndices_.size(); ++k) {
     const auto e = static_cast<Eigen::Index>(k);
     const double centre = startUnit_[e] + step * (goalUnit_[e] - startUnit_[e]);
@@ -30,14 +32,14 @@ void ArmSegmentSampler::draw(double step, double halfSize, RandomSource& random,
     const double high = std::min(1.0, centre + halfSize);
     const JointLimit& joint = armLimits_[k];
     // Rounding in denormalise may step a hair past a limit; the limits themselves are valid.
-    q[armIndices_[k]] = std::clamp(joint.denormalise(random.uniform(low, high)), joint.lower, joint.upper);
+    q[armIndices_[k]] = std::clamp(joint.denormalise(low + (high - low) * point[k]), joint.lower, joint.upper);
   }
 }
 
-bool ArmSegmentSampler::sample(double step, double halfSize, RandomSource& random, StateValidator& validator,
+bool ArmSegmentSampler::sample(double step, double halfSize, UnitPoints& points, StateValidator& validator,
                                Configuration& q, int maxTrials) const {
   for (int trial = 0; trial < maxTrials; ++trial) {
-    draw(step, halfSize, random, q);
+    draw(step, halfSize, points, q);
     if (validator.isArmValid(q)) return true;
   }
   return false;

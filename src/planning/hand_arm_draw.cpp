@@ -6,7 +6,7 @@
 namespace pmdplan {
 
 HandArmDraw drawHandArm(const HandArmSources& sources, double step, double armHalfSize, Configuration q,
-                        RandomSource& random, const PlannerRun& run, PlanningStatistics& statistics) {
+                        UnitPoints& points, const PlannerRun& run, PlanningStatistics& statistics) {
   const PlannerParameters& parameters = sources.parameters;
   std::size_t trials = 0;
   for (int j = 0; j < parameters.armTrials; ++j) {
@@ -18,13 +18,13 @@ HandArmDraw drawHandArm(const HandArmSources& sources, double step, double armHa
     // only, which try c_ini and c_goal in turn).
     if (!sources.space.armIndices.empty()) {
       ++statistics.stateChecks;
-      if (!sources.arm.sample(step, armHalfSize, random, sources.validator, q)) continue;
+      if (!sources.arm.sample(step, armHalfSize, points, sources.validator, q)) continue;
     }
     int dimSch = sources.hand.initialDimension();
     for (int h = 0; h < parameters.handTrials; ++h) {
       if (statistics.samples >= parameters.maxSamples) return {std::nullopt, 0, PlannerStatus::SampleLimit};
       if (run.timeIsUp()) return {std::nullopt, 0, PlannerStatus::TimeLimit};
-      sources.hand.sample(dimSch, random, q);
+      sources.hand.sample(dimSch, points, q);
       ++statistics.samples;
       ++statistics.stateChecks;
       ++trials;

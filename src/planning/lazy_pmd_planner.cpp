@@ -66,7 +66,7 @@ PlannerStatus LazyPmdPlanner::solve() {
 
 std::optional<PlannerStatus> LazyPmdPlanner::sampleNode(double step, double armHalfSize) {
   const HandArmDraw draw = drawHandArm({space_, *armSampler_, *handSampler_, stateValidator_, parameters_}, step,
-                                       armHalfSize, start_, random_, run_, statistics_);
+                                       armHalfSize, start_, points_, run_, statistics_);
   if (draw.sample) connect(roadmap_.addNode(*draw.sample, space_.normalise(*draw.sample)), step);
   return draw.stop;
 }

@@ -83,6 +83,7 @@ void PlannerParameters::check() const {
     throw InputError("", "time-limit",
                      "must be a positive number of seconds up to 1e6 (or inf: no limit), got " + text(timeLimit));
   lazy.check();
+  connect.check();
 }
 
 }  // namespace pmdplan

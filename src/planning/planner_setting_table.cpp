@@ -99,6 +99,19 @@ PlannerSetting smoothingSetting() {
   return s;
 }
 
+PlannerSetting sequenceSetting() {
+  PlannerSetting s{
+      "sequence",          "", "the samplers' numbers: random, halton or sdk (the paper's toolkit, Sect. 6)",
+      "random|halton|sdk", {}, {}};
+  s.set = [](PlannerParameters& p, const std::string& text) {
+    const std::optional<SampleSequence> sequence = parseSampleSequence(text);
+    if (!sequence) reject("sequence", text, "a sample sequence; expected " + knownSampleSequenceNames());
+    p.sequence = *sequence;
+  };
+  s.get = [](const PlannerParameters& p) { return sampleSequenceName(p.sequence); };
+  return s;
+}
+
 }  // namespace
 
 const std::vector<PlannerSetting>& plannerSettingTable() {
@@ -136,6 +149,7 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
           [](auto& p) -> auto& { return p.timeLimit; }),
       setting<std::uint64_t>(
           "seed", "", "random seed", [](auto& p) -> auto& { return p.seed; }),
+      sequenceSetting(),
       setting<std::size_t>(
           "lazy-batch", "", "for pmd-lazy: arm boxes sampled along the segment per round, besides the four at its ends",
           [](auto& p) -> auto& { return p.lazy.batch; }),
@@ -151,6 +165,23 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
       setting<double>(
           "lazy-arm-growth", "", "for pmd-lazy: rho_a is multiplied by this after each round without a path",
           [](auto& p) -> auto& { return p.lazy.armGrowth; }),
+      setting<double>(
+          "connect-range", "", "for pmd-connect: longest tree step, as a multiple of d(c_ini, c_goal) (inf: none)",
+          [](auto& p) -> auto& { return p.connect.rangeFactor; }),
+      setting<std::size_t>(
+          "connect-round", "",
+          "for pmd-connect: samples per round; the arm region grows after each round that left the trees apart",
+          [](auto& p) -> auto& { return p.connect.roundSamples; }),
+      setting<double>(
+          "connect-arm-growth", "",
+          "for pmd-connect: the arm region's largest half-size is multiplied by this after each round that left the "
+          "trees apart",
+          [](auto& p) -> auto& { return p.connect.armGrowth; }),
+      setting<std::size_t>(
+          "connect-probes", "",
+          "for pmd-connect: inner states of a new tree step checked before it joins its tree (its motion check waits "
+          "for a path)",
+          [](auto& p) -> auto& { return p.connect.probes; }),
   };
   return table;
 }

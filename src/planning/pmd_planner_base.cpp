@@ -34,8 +34,9 @@ void PmdPlannerBase::clearResults() {
   statistics_ = {};
 }
 
-void PmdPlannerBase::beginRun() {
-  random_.reseed(parameters_.seed);
+void PmdPlannerBase::beginRun(int segmentPointDimension) {
+  points_.reset(parameters_.sequence, parameters_.seed,
+                {handSampler_->maxDimension(), static_cast<int>(space_.armIndices.size()), segmentPointDimension});
   run_.begin(parameters_.timeLimit, motionValidator_);
 }
 

@@ -68,7 +68,7 @@ PlannerStatus PmdRoadmapPlanner::solve() {
           progress_({k, rho, i, maxsteps + 1, searchRange, statistics_.samples, roadmap_.nodeCount(),
                      roadmap_.componentCount(), run_.elapsedSeconds()});
         const HandArmDraw draw = drawHandArm({space_, *armSampler_, *handSampler_, stateValidator_, parameters_}, step,
-                                             rho, start_, random_, run_, statistics_);
+                                             rho, start_, points_, run_, statistics_);
         if (draw.stop) return endRun(*draw.stop);
         if (!draw.sample) continue;
         added = true;

@@ -38,16 +38,18 @@ SynergyHandSampler::SynergyHandSampler(const PlanningSpace& space, const Synergy
   halfWidths_ = parameters.kappa * model.sigma.head(used);
 }
 
-void SynergyHandSampler::sample(int dimension, RandomSource& random, Configuration& q) const {
+void SynergyHandSampler::sample(int dimension, UnitPoints& points, Configuration& q) const {
   dimension = std::clamp(dimension, initialDimension(), maxDimension());
   const int ownAxes = std::min(dimension, ownAxisCount());
   const int pmds = dimension - ownAxes;
 
-  // Draw order is fixed (own axes, then PMD 1, 2, ...) so a seed always means the same sample.
-  Eigen::VectorXd ownValues(ownAxes);
-  for (int k = 0; k < ownAxes; ++k) ownValues[k] = random.uniform01();
+  // The point's coordinates in a fixed order (own axes, then PMD 1, 2, ...), so a seed always
+  // means the same sample.
+  Eigen::VectorXd point(dimension);
+  points.next(PointStream::Hand, dimension, point.data());
+  const Eigen::VectorXd ownValues = point.head(ownAxes);
   Eigen::VectorXd coefficients(pmds);
-  for (int k = 0; k < pmds; ++k) coefficients[k] = random.uniform(-halfWidths_[k], halfWidths_[k]);
+  for (int k = 0; k < pmds; ++k) coefficients[k] = -halfWidths_[k] + 2.0 * halfWidths_[k] * point[ownAxes + k];
 
   // b + E'·s summed in a fixed order (not Eigen's vectorised product), so every platform agrees
   // to the last bit.

@@ -4,6 +4,7 @@
 
 #include "pmdplan/planning/lazy_pmd_planner.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
+#include "pmdplan/planning/pmd_connect_planner.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 
 namespace pmdplan {
@@ -27,6 +28,12 @@ TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const
   const Configuration& approachGoal = result.grasp ? result.grasp->pregrasp : task.goal;
   if (options.algorithm == RoadmapAlgorithm::Lazy) {
     LazyPmdPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
+    planner.setStartAndGoal(task.start, approachGoal);
+    result.status = planner.solve();
+    result.path = planner.path();
+    result.statistics = planner.statistics();
+  } else if (options.algorithm == RoadmapAlgorithm::Connect) {
+    PmdConnectPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
     planner.setStartAndGoal(task.start, approachGoal);
     result.status = planner.solve();
     result.path = planner.path();

@@ -63,6 +63,14 @@ TEST_F(BenchmarkRun, PmdSampledOmplPlannersSolveWithValidPathsFarCloserToTheSyne
     // Measured on can_on_table over seeds 1..5: 0.007 (@pmd) against 0.22 (plain), about 30×.
     EXPECT_LT(r.humanLikeness->subspaceDistanceMean * 3.0, plain.humanLikeness->subspaceDistanceMean) << name;
   }
+  // The sampler draws its points from the chosen sequence too.
+  for (const SampleSequence sequence : {SampleSequence::Halton, SampleSequence::Sdk}) {
+    parameters.sequence = sequence;
+    const RunRecord r = runPlannerOnce(bench, *findPlanner("ompl:RRTConnect@pmd"), 1, parameters);
+    ASSERT_TRUE(r.succeeded()) << sampleSequenceName(sequence) << ": " << r.failure;
+    EXPECT_LT(r.humanLikeness->subspaceDistanceMean * 3.0, plain.humanLikeness->subspaceDistanceMean)
+        << sampleSequenceName(sequence);
+  }
 }
 
 TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
@@ -82,18 +90,19 @@ TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
   EXPECT_LT(r.humanLikeness->subspaceDistanceMean, 0.1);
 }
 
-TEST_F(BenchmarkRun, TheLazyPmdPlannerSolvesWithAValidHumanLikePath) {
+TEST_F(BenchmarkRun, OurLazyAndBidirectionalPlannersSolveWithValidHumanLikePaths) {
   PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
   parameters.timeLimit = 30.0;
-  for (const std::uint64_t seed : {1, 2, 3}) {
-    parameters.seed = seed;
-    const RunRecord r = runPlannerOnce(*bench_, *findPlanner("pmd-lazy"), 1, parameters);
-    EXPECT_EQ(r.planner, "pmd-lazy");
-    ASSERT_TRUE(r.succeeded()) << "seed " << seed << ": " << r.failure;
-    EXPECT_TRUE(r.valid);
-    ASSERT_TRUE(r.humanLikeness.has_value());
-    EXPECT_LT(r.humanLikeness->subspaceDistanceMean, 0.1) << "seed " << seed;
-  }
+  for (const char* name : {"pmd-lazy", "pmd-connect"})
+    for (const std::uint64_t seed : {1, 2, 3}) {
+      parameters.seed = seed;
+      const RunRecord r = runPlannerOnce(*bench_, *findPlanner(name), 1, parameters);
+      EXPECT_EQ(r.planner, name);
+      ASSERT_TRUE(r.succeeded()) << name << " seed " << seed << ": " << r.failure;
+      EXPECT_TRUE(r.valid);
+      ASSERT_TRUE(r.humanLikeness.has_value());
+      EXPECT_LT(r.humanLikeness->subspaceDistanceMean, 0.1) << name << " seed " << seed;
+    }
 }
 
 TEST_F(BenchmarkRun, TheMeasuresThatDoNotUseThePlannersModelAlsoPreferPmdToFullSpacePaths) {
@@ -140,6 +149,8 @@ TEST_F(BenchmarkRun, AnOmplPlannerSolvesInAForkedChildAndTheSameSeedGivesTheSame
   EXPECT_GT(a->smoothingTimeSeconds, 0.0);  // our smoothing ran on OMPL's path
   a->planningTimeSeconds = b->planningTimeSeconds = 0.0;
   a->smoothingTimeSeconds = b->smoothingTimeSeconds = 0.0;
+  EXPECT_GT(a->certificationTimeSeconds, 0.0);  // the returned path's motion checks, timed after the run
+  a->certificationTimeSeconds = b->certificationTimeSeconds = 0.0;
   EXPECT_EQ(encodeRunRecord(*a), encodeRunRecord(*b));
 }
 

@@ -36,13 +36,16 @@ TEST(PlannerRoster, OursMapToTheirHandSamplingModes) {
   EXPECT_EQ(findPlanner("pmd-lazy")->mode, HandSamplingMode::Synergy);
   EXPECT_EQ(findPlanner("pmd-lazy")->family, PlannerFamily::PmdRoadmap);
   EXPECT_EQ(findPlanner("pmd-lazy")->algorithm, RoadmapAlgorithm::Lazy);
+  EXPECT_EQ(findPlanner("pmd-connect")->mode, HandSamplingMode::Synergy);
+  EXPECT_EQ(findPlanner("pmd-connect")->family, PlannerFamily::PmdRoadmap);
+  EXPECT_EQ(findPlanner("pmd-connect")->algorithm, RoadmapAlgorithm::Connect);
 }
 
 TEST(PlannerRoster, UnknownNamesAreNotFound) {
   EXPECT_FALSE(findPlanner("RRTConnect").has_value());
   EXPECT_FALSE(findPlanner("ompl:RRTstar").has_value());
   EXPECT_FALSE(isOmplPlannerName("RRTstar"));
-  EXPECT_NE(knownPlannerNames().find("pmd, full, pmd-lazy, ompl:RRTConnect"), std::string::npos);
+  EXPECT_NE(knownPlannerNames().find("pmd, full, pmd-lazy, pmd-connect, ompl:RRTConnect"), std::string::npos);
 }
 
 }  // namespace

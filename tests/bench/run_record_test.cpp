@@ -17,6 +17,7 @@ RunRecord solvedRecord() {
   r.valid = true;
   r.planningTimeSeconds = 0.1 + 0.2;  // not a short decimal: must come back bit for bit
   r.smoothingTimeSeconds = 1.0 / 3.0;
+  r.certificationTimeSeconds = 2.0 / 7.0;
   r.samples = 1234;
   r.armTrials = 321;
   r.maxTrials = 22;
@@ -44,6 +45,7 @@ TEST(RunRecord, EncodingRestoresEveryFieldExactly) {
   EXPECT_TRUE(back->valid);
   EXPECT_EQ(back->planningTimeSeconds, r.planningTimeSeconds);
   EXPECT_EQ(back->smoothingTimeSeconds, r.smoothingTimeSeconds);
+  EXPECT_EQ(back->certificationTimeSeconds, r.certificationTimeSeconds);
   EXPECT_EQ(back->samples, 1234u);
   EXPECT_EQ(back->armTrials, 321u);
   EXPECT_EQ(back->maxTrials, 22u);
@@ -104,6 +106,19 @@ TEST(RunRecord, RejectsTextThatIsNotARecord) {
   std::string missing = text;
   missing.erase(run, 8);
   EXPECT_FALSE(decodeRunRecord(missing).has_value());
+}
+
+// A journal written before the certification time existed still reads (the time 0), and no
+// other key may be missing.
+TEST(RunRecord, ARecordWithoutTheCertificationTimeReadsAsAnOlderOne) {
+  nlohmann::json json = nlohmann::json::parse(encodeRunRecord(solvedRecord()));
+  json.erase("certification_time_s");
+  const auto older = decodeRunRecord(json.dump());
+  ASSERT_TRUE(older.has_value());
+  EXPECT_EQ(older->certificationTimeSeconds, 0.0);
+  EXPECT_EQ(older->samples, 1234u);
+  json.erase("samples");
+  EXPECT_FALSE(decodeRunRecord(json.dump()).has_value());
 }
 
 TEST(RunRecord, IsOneJsonObjectWithTheKeysInTheirOrder) {

@@ -50,17 +50,19 @@ TEST(PlanCli, TheSameTaskAndSeedGiveAByteIdenticalPathFile) {
   EXPECT_FALSE(contents(a).empty());
 }
 
-TEST(PlanCli, TheLazyPlannerWritesAByteIdenticalPathThatValidates) {
-  test::TempDir dir;
-  const auto a = dir.path() / "a.json", b = dir.path() / "b.json";
-  const auto plan = runCli("plan can_in_box --planner pmd-lazy --seed 4 -o " + quoted(a));
-  ASSERT_EQ(plan.exitCode, 0) << plan.out << plan.err;
-  ASSERT_EQ(runCli("plan can_in_box --planner pmd-lazy --seed 4 -o " + quoted(b)).exitCode, 0);
-  EXPECT_EQ(contents(a), contents(b));
-  EXPECT_EQ(nlohmann::json::parse(contents(a))["planner"], "pmd-lazy");
-  const auto validate = runCli("validate can_in_box " + quoted(a) + " --json");
-  ASSERT_EQ(validate.exitCode, 0) << validate.out << validate.err;
-  EXPECT_TRUE(nlohmann::json::parse(validate.out)["valid"].get<bool>());
+TEST(PlanCli, OurLazyAndBidirectionalPlannersWriteByteIdenticalPathsThatValidate) {
+  for (const std::string planner : {"pmd-lazy", "pmd-connect"}) {
+    test::TempDir dir;
+    const auto a = dir.path() / "a.json", b = dir.path() / "b.json";
+    const auto plan = runCli("plan can_in_box --planner " + planner + " --seed 4 -o " + quoted(a));
+    ASSERT_EQ(plan.exitCode, 0) << plan.out << plan.err;
+    ASSERT_EQ(runCli("plan can_in_box --planner " + planner + " --seed 4 -o " + quoted(b)).exitCode, 0);
+    EXPECT_EQ(contents(a), contents(b)) << planner;
+    EXPECT_EQ(nlohmann::json::parse(contents(a))["planner"], planner);
+    const auto validate = runCli("validate can_in_box " + quoted(a) + " --json");
+    ASSERT_EQ(validate.exitCode, 0) << validate.out << validate.err;
+    EXPECT_TRUE(nlohmann::json::parse(validate.out)["valid"].get<bool>()) << planner;
+  }
 }
 
 TEST(PlanCli, ValidateRejectsAPathThroughTheCan) {
@@ -139,13 +141,16 @@ TEST(PlanCli, AnUnknownPlannerIsABadInput) {
   const auto result = runCli("plan can_on_table --planner rrt");
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.err.find("--planner"), std::string::npos) << result.err;
-  EXPECT_NE(result.err.find("expected pmd, full, pmd-lazy"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("expected pmd, full, pmd-lazy, pmd-connect"), std::string::npos) << result.err;
   const auto ompl = runCli("plan can_on_table --planner ompl:RRTConnect");
   EXPECT_EQ(ompl.exitCode, 2) << "plan runs our planners only; bench runs OMPL's";
   EXPECT_NE(ompl.err.find("'ompl:RRTConnect' is not a planner"), std::string::npos) << ompl.err;
   const auto setting = runCli("plan can_on_table --planner pmd-lazy --lazy-radius 0");
   EXPECT_EQ(setting.exitCode, 2);
   EXPECT_NE(setting.err.find("--lazy-radius"), std::string::npos) << setting.err;
+  const auto connect = runCli("plan can_on_table --planner pmd-connect --connect-arm-growth 0.5");
+  EXPECT_EQ(connect.exitCode, 2);
+  EXPECT_NE(connect.err.find("--connect-arm-growth"), std::string::npos) << connect.err;
 }
 
 }  // namespace

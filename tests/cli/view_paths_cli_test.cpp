@@ -185,9 +185,9 @@ TEST(ViewPathsBench, BenchPathsAreTheRunsPathsAndOpenInTheViewer) {
     EXPECT_GE(path.points.size(), 2u);
     // The path the CSV measured: its row's path_nodes.
     const auto row = csvRow(contents(csv), "can_on_table," + path.planner + ",0,4,");
-    ASSERT_EQ(row.size(), 24u) << path.planner;
+    ASSERT_EQ(row.size(), 25u) << path.planner;
     EXPECT_EQ(row[4], "1") << "solved";
-    EXPECT_EQ(row[14], std::to_string(path.points.size())) << path.planner;
+    EXPECT_EQ(row[15], std::to_string(path.points.size())) << path.planner;
   }
   const auto view = runCli(dir, "view " + quoted(paths) + " --seed 4 --out " + quoted(dir.path() / "v"));
   ASSERT_EQ(view.exitCode, 0) << view.err;

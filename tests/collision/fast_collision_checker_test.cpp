@@ -186,6 +186,36 @@ TEST(FastCollisionChecker, BatchesGiveTheExactCheckersAnswers) {
   EXPECT_GT(colliding, total / 10);
 }
 
+// firstWithValidity stops deciding lanes at the one it looks for: its index is the one the
+// exact checker gives, for runs of 1 to 20 configurations (several batches) looking for a free one
+// and for a colliding one.
+TEST(FastCollisionChecker, FirstWithValidityFindsTheExactCheckersFirst) {
+  const Task task = loadTaskByName("can_in_box");
+  ExactCollisionChecker exact(task), reference(task);
+  FastCollisionChecker fast(task, exact);
+  RandomSource random(11);
+  int foundFree = 0, foundColliding = 0;
+  for (int trial = 0; trial < test::trials(600, 100); ++trial) {
+    const int count = 1 + trial % 20;
+    std::vector<Configuration> configurations;
+    std::vector<const Configuration*> pointers;
+    for (int k = 0; k < count; ++k) configurations.push_back(testing::taskConfiguration(task, random, (trial + k) % 3));
+    for (const Configuration& q : configurations) pointers.push_back(&q);
+    for (const bool wanted : {true, false}) {
+      int expected = count;
+      for (int k = 0; k < count && expected == count; ++k)
+        if (reference.isValid(configurations[static_cast<std::size_t>(k)]) == wanted) expected = k;
+      const std::size_t checksBefore = fast.checkCount();
+      ASSERT_EQ(fast.firstWithValidity(pointers.data(), count, wanted), expected)
+          << "trial " << trial << (wanted ? ": first free" : ": first colliding");
+      EXPECT_GE(fast.checkCount() - checksBefore, static_cast<std::size_t>(std::min(expected + 1, count)));
+      if (expected < count) (wanted ? foundFree : foundColliding) += 1;
+    }
+  }
+  EXPECT_GT(foundFree, 50);
+  EXPECT_GT(foundColliding, 50);
+}
+
 TEST(FastCollisionChecker, RefusesASimdLevelTheCpuCannotRun) {
   const Task task = loadTaskByName("can_on_table");
   ExactCollisionChecker exact(task);

@@ -16,7 +16,7 @@ TEST(ArmSegmentSampler, SegmentLengthIsInNormalisedArmSpace) {
 TEST(ArmSegmentSampler, SamplesTheBoxAroundTheSegmentPoint) {
   const PlanningSpace space = toy::space();
   const ArmSegmentSampler sampler(space, toy::start(), toy::goal());
-  RandomSource random(3);
+  UnitPoints random(SampleSequence::Random, 3, {0, sampler.dimension(), 0});
   const double rho = 0.01;
   for (const double step : {0.0, 0.25, 0.5, 1.0}) {
     Eigen::Vector2d low = Eigen::Vector2d::Constant(1.0);
@@ -44,7 +44,7 @@ TEST(ArmSegmentSampler, ABoxPastTheLimitsIsCutToThem) {
   const Configuration start = toy::fromUnit({0.0, 0.98, 0.3, 0.8, 0.8, 0.5});
   const Configuration goal = toy::fromUnit({0.2, 0.98, 0.3, 0.9, 0.7, 0.5});
   const ArmSegmentSampler sampler(space, start, goal);
-  RandomSource random(5);
+  UnitPoints random(SampleSequence::Random, 5, {0, sampler.dimension(), 0});
   double lowest = 1.0;
   double highest = 0.0;
   for (int i = 0; i < 4000; ++i) {
@@ -58,7 +58,7 @@ TEST(ArmSegmentSampler, ABoxPastTheLimitsIsCutToThem) {
   EXPECT_LT(lowest, 0.001) << "reaches the lower limit";
   EXPECT_GT(highest, 0.999) << "reaches the upper limit";
   // Uniform over the cut box, not piled up on the limit: no two draws on exactly the limit.
-  RandomSource again(5);
+  UnitPoints again(SampleSequence::Random, 5, {0, sampler.dimension(), 0});
   int onLimit = 0;
   for (int i = 0; i < 4000; ++i) {
     Configuration q = start;
@@ -76,7 +76,7 @@ TEST(ArmSegmentSampler, Algorithm1RetriesUntilTheArmIsFree) {
   const Configuration goal = toy::fromUnit({0.9, 0.95, 0.3, 0.9, 0.7, 0.5});
   const ArmSegmentSampler sampler(space, start, goal);
   toy::WallStateValidator validator;
-  RandomSource random(11);
+  UnitPoints random(SampleSequence::Random, 11, {0, sampler.dimension(), 0});
   int found = 0;
   for (int i = 0; i < 200; ++i) {
     Configuration q = start;

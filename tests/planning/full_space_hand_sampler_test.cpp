@@ -13,7 +13,7 @@ TEST(FullSpaceHandSampler, FillsTheWholeHandBoxAtOnce) {
   EXPECT_EQ(sampler.initialDimension(), 4);
   EXPECT_EQ(sampler.maxDimension(), 4);
   EXPECT_EQ(sampler.name(), "full");
-  RandomSource random(4);
+  UnitPoints random(SampleSequence::Random, 4, {sampler.maxDimension(), 0, 0});
   Eigen::Vector4d low = Eigen::Vector4d::Constant(1.0);
   Eigen::Vector4d high = Eigen::Vector4d::Constant(0.0);
   Eigen::Vector4d sum = Eigen::Vector4d::Zero();

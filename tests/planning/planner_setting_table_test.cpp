@@ -47,7 +47,12 @@ TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
                                                     {"lazy-neighbours", "5"},
                                                     {"lazy-radius", "1.5"},
                                                     {"lazy-probes", "3"},
-                                                    {"lazy-arm-growth", "1.25"}};
+                                                    {"lazy-arm-growth", "1.25"},
+                                                    {"sequence", "sdk"},
+                                                    {"connect-range", "0.5"},
+                                                    {"connect-round", "9"},
+                                                    {"connect-arm-growth", "1.5"},
+                                                    {"connect-probes", "4"}};
   ASSERT_EQ(other.size(), plannerSettingTable().size()) << "a new setting needs a value here";
   for (const auto& [flag, value] : other) {
     PlannerParameters p;

@@ -24,9 +24,9 @@ class RecordingHandSampler : public HandSampler {
       : inner_(std::move(inner)), dimensions_(dimensions) {}
   int initialDimension() const override { return inner_->initialDimension(); }
   int maxDimension() const override { return inner_->maxDimension(); }
-  void sample(int dimension, RandomSource& random, Configuration& q) const override {
+  void sample(int dimension, UnitPoints& points, Configuration& q) const override {
     dimensions_.push_back(dimension);
-    inner_->sample(dimension, random, q);
+    inner_->sample(dimension, points, q);
   }
   std::string name() const override { return inner_->name(); }
 

@@ -23,7 +23,7 @@ TEST(RobotPlanningSpace, TheShippedRobotAndSynergyModelFit) {
   EXPECT_EQ(sampler.initialDimension(), 2) << "thumb base + PMD 1";
   EXPECT_EQ(sampler.maxDimension(), 5) << "thumb base + 4 PMDs, as in the paper";
 
-  RandomSource random(1);
+  UnitPoints random(SampleSequence::Random, 1, {sampler.maxDimension(), 0, 0});
   Configuration q = Eigen::VectorXd::Zero(space.dof());
   for (int i = 0; i < 200; ++i) {
     sampler.sample(2 + i % 4, random, q);

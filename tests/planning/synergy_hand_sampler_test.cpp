@@ -28,7 +28,7 @@ TEST(SynergyHandSampler, EachDimensionUsesOnlyItsFirstAxes) {
   const PlanningSpace space = toy::space();
   const SynergyModel model = toy::synergyModel();
   const SynergyHandSampler sampler(space, model);
-  RandomSource random(1);
+  UnitPoints random(SampleSequence::Random, 1, {sampler.maxDimension(), 0, 0});
   for (int dimension = 2; dimension <= 4; ++dimension) {
     const int pmds = dimension - 1;
     double thumbLow = 1.0;
@@ -65,7 +65,7 @@ TEST(SynergyHandSampler, ClampsToTheJointLimits) {
   SynergyModel model = toy::synergyModel();
   model.sigma = Eigen::Vector3d(1.0, 1.0, 1.0);  // kappa sigma = 2: far past the limits
   const SynergyHandSampler sampler(space, model);
-  RandomSource random(2);
+  UnitPoints random(SampleSequence::Random, 2, {sampler.maxDimension(), 0, 0});
   int atLimit = 0;
   for (int i = 0; i < 1000; ++i) {
     Configuration q = toy::start();
@@ -81,8 +81,8 @@ TEST(SynergyHandSampler, DimensionsOutsideTheRangeAreClamped) {
   const PlanningSpace space = toy::space();
   const SynergyModel model = toy::synergyModel();
   const SynergyHandSampler sampler(space, model);
-  RandomSource first(9);
-  RandomSource second(9);
+  UnitPoints first(SampleSequence::Random, 9, {sampler.maxDimension(), 0, 0});
+  UnitPoints second(SampleSequence::Random, 9, {sampler.maxDimension(), 0, 0});
   Configuration a = toy::start();
   Configuration b = toy::start();
   sampler.sample(99, first, a);
@@ -93,8 +93,8 @@ TEST(SynergyHandSampler, DimensionsOutsideTheRangeAreClamped) {
 TEST(SynergyHandSampler, TheSameSeedGivesTheSameSamples) {
   const PlanningSpace space = toy::space();
   const SynergyHandSampler sampler(space, toy::synergyModel());
-  RandomSource first(123);
-  RandomSource second(123);
+  UnitPoints first(SampleSequence::Random, 123, {sampler.maxDimension(), 0, 0});
+  UnitPoints second(SampleSequence::Random, 123, {sampler.maxDimension(), 0, 0});
   for (int i = 0; i < 50; ++i) {
     Configuration a = toy::start();
     Configuration b = toy::start();

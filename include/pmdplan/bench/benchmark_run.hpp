@@ -25,9 +25,10 @@ namespace pmdplan {
 RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters,
                          PathFile* path = nullptr);
 
-/// Validates the solved run's path and measures it into `record` (path nodes, length,
-/// human-likeness, valid); an invalid path sets `failure` to the validation's first problem. A
-/// grasp path's closing phase (from point `closingFrom`) is validated with the grasp rule.
+/// Validates the solved run's path and measures it into `record` (the time to certify its approach
+/// with the bench's motion checker, path nodes, length, human-likeness, valid); an invalid path sets `failure` to the
+/// validation's first problem. A grasp path's closing phase (from point `closingFrom`) is validated with the grasp
+/// rule.
 void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record,
                 std::optional<std::size_t> closingFrom = {});
 

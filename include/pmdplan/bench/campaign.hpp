@@ -5,6 +5,7 @@
 // The records do not depend on how many ranks ran them, timings aside.
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,12 +37,13 @@ using CampaignProgress = std::function<void(std::size_t done, std::size_t total,
 /// Built once before any run, on every rank: the synergy model and each task's TaskBench, so a
 /// missing task, a colliding start or a model for another hand is an InputError before any run.
 struct CampaignInputs {
-  std::unique_ptr<SynergyModel> synergies;  ///< behind a pointer: the benches keep its address
-  std::string synergyFile;
+  /// The synergy models by file, behind pointers: the benches keep their addresses.
+  std::map<std::string, std::unique_ptr<SynergyModel>> synergies;
   std::vector<std::unique_ptr<TaskBench>> tasks;  ///< one per BenchOptions::tasks entry
 };
-/// Reads the tasks and the synergy model (options.synergies, or the first task's robot default)
-/// and builds the checkers of options.checker.
+/// Reads the tasks and the synergy models (options.synergies for every task, or each task's robot's
+/// shipped model, so tasks of several robots share a campaign) and builds the checkers of
+/// options.checker.
 CampaignInputs loadCampaignInputs(const BenchOptions& options);
 
 /// Runs the jobs `jobIndices` (indices into campaignJobs(options)), each in a forked child that is

@@ -11,6 +11,7 @@
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"
 #include "pmdplan/model/configuration.hpp"
+#include "pmdplan/planning/planner_parameters.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/synergy_hand_sampler.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
@@ -42,8 +43,9 @@ bool isOmplPlannerName(const std::string& name);
 /// OmplPmdStateSampler (src/bench/ompl_pmd_state_sampler.hpp) from this model and arm region.
 struct OmplPmdSampling {
   const SynergyModel* synergies = nullptr;
-  SynergySamplingParameters pmdBox;
-  double initialArmHalfSize = 0.001;  ///< rho_a at the first draw (PlannerParameters' setting)
+  /// Of these: the PMD box, rho_a, the arm region's growth (connect-arm-growth, connect-round) and
+  /// the sequence.
+  PlannerParameters parameters;
 };
 
 /// One run. Sets OMPL's process-wide seed (ompl::RNG::setSeed), which OMPL honours only before its

@@ -3,7 +3,8 @@
 // columns the planners, one table per task. Each cell is "mean (median)" over the successful
 // runs (solved and valid), the first row the success rate over all runs. With pmd among the
 // planners, a summary comes first: every planner's median planning time per task, full / pmd and
-// the best OMPL planner over pmd.
+// the best OMPL planner over pmd; with OMPL's planners, each of our PMD planners against the best
+// of them (time, certification time, synergy-subspace distance).
 #include <string>
 #include <vector>
 

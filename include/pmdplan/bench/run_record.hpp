@@ -47,6 +47,9 @@ struct RunRecord {
   bool valid = false;
   double planningTimeSeconds = 0.0;
   double smoothingTimeSeconds = 0.0;
+  /// Seconds to certify the returned path with the planner's own motion checker: one motion check
+  /// of each of its segments (up to the pre-grasp of a grasp), after the run (0 if not solved).
+  double certificationTimeSeconds = 0.0;
   /// PMD planners: hand-arm draws (Table 2's and Table 4's "samples").
   /// OMPL planners: states their validity checker was asked about.
   std::size_t samples = 0;
@@ -81,7 +84,8 @@ std::string nodesByHandDimensionText(const std::map<int, std::size_t>& counts);
 const std::vector<const char*>& runRecordKeys();
 nlohmann::ordered_json runRecordToJson(const RunRecord& record);
 /// Inverse of runRecordToJson; std::nullopt unless `json` holds exactly the record's keys (and
-/// `otherKeys` more, which the caller reads) with values of their kind.
+/// `otherKeys` more, which the caller reads) with values of their kind. A record written before
+/// certification_time_s existed (an older campaign journal) reads with it 0.
 std::optional<RunRecord> runRecordFromJson(const nlohmann::json& json, std::size_t otherKeys = 0);
 
 /// One line of JSON (no newline inside) holding every field, numbers in their shortest exact form.

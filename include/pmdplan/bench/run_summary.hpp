@@ -22,8 +22,8 @@ struct RunSummary {
   std::size_t runs = 0;
   std::size_t solved = 0;     ///< planner said solved
   std::size_t succeeded = 0;  ///< solved and valid
-  MetricSummary planningTime, smoothingTime, samples, armTrials, maxTrials, finalArmHalfSize, roadmapNodes, pathNodes,
-      pathLength, collisionChecks, subspaceDistanceMean, subspaceDistanceMax, mahalanobisMean;
+  MetricSummary planningTime, smoothingTime, certificationTime, samples, armTrials, maxTrials, finalArmHalfSize,
+      roadmapNodes, pathNodes, pathLength, collisionChecks, subspaceDistanceMean, subspaceDistanceMax, mahalanobisMean;
   /// Per hand dimension (2 = thumb base + 1 PMD, ...): the share of a run's sampled nodes that
   /// dimension produced, in %, over the successful runs that sampled any node (Table 2's rows).
   std::map<int, MetricSummary> nodeShareByHandDimension;

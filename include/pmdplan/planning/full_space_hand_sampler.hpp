@@ -15,7 +15,7 @@ class FullSpaceHandSampler final : public HandSampler {
 
   int initialDimension() const override { return static_cast<int>(handIndices_.size()); }
   int maxDimension() const override { return static_cast<int>(handIndices_.size()); }
-  void sample(int dimension, RandomSource& random, Configuration& q) const override;
+  void sample(int dimension, UnitPoints& points, Configuration& q) const override;
   std::string name() const override { return "full"; }
 
  private:

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "pmdplan/collision/state_validator.hpp"
-#include "pmdplan/core/random_source.hpp"
+#include "pmdplan/core/sequences/unit_points.hpp"
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
@@ -38,6 +38,6 @@ struct HandArmDraw {
 /// `q` starts as c_ini (a hand alone keeps its arm-less entries); counts go to `statistics`
 /// (samples, arm trials, state checks, max trials, nodes by hand dimension).
 HandArmDraw drawHandArm(const HandArmSources& sources, double step, double armHalfSize, Configuration q,
-                        RandomSource& random, const PlannerRun& run, PlanningStatistics& statistics);
+                        UnitPoints& points, const PlannerRun& run, PlanningStatistics& statistics);
 
 }  // namespace pmdplan

@@ -8,8 +8,10 @@
 #include <optional>
 #include <string>
 
+#include "pmdplan/core/sequences/sample_sequence.hpp"
 #include "pmdplan/planning/hand_sampling_mode.hpp"
 #include "pmdplan/planning/lazy_pmd_settings.hpp"
+#include "pmdplan/planning/pmd_connect_settings.hpp"
 #include "pmdplan/planning/synergy_hand_sampler.hpp"
 
 namespace pmdplan {
@@ -70,12 +72,18 @@ struct PlannerParameters {
   /// (std::chrono's clock overflows past that order) or +infinity. The only thing
   /// time is allowed to change: a run it does not stop is the same for the same seed.
   double timeLimit = 60.0;
-  /// Seed of the run's std::mt19937_64.
+  /// Seed of the run's std::mt19937_64 (and of the Halton offsets and SDK starts).
   std::uint64_t seed = 1;
+  /// Where the hand and arm samplers' numbers come from (`--sequence`): uniform random, Halton or
+  /// SDK, the three of the paper's toolkit (Sect. 6). The paper does not say which its runs used;
+  /// random is the default (docs/deviations.md). Every sampler maps the same kind of points.
+  SampleSequence sequence = SampleSequence::Random;
   /// Apply the smoothing of Sect. 5.3 to the path A* finds.
   bool smooth = true;
   /// The lazy PMD planner's own settings (`--planner pmd-lazy`); the paper's planner ignores them.
   LazyPmdSettings lazy;
+  /// The bidirectional PMD planner's own settings (`--planner pmd-connect`); the others ignore them.
+  PmdConnectSettings connect;
 
   /// A preset's values for a mode: Table 3's n_A = n_H = 10 for Synergy, 20 for FullSpace.
   static PlannerParameters preset(PlannerPreset preset, HandSamplingMode mode);

@@ -12,7 +12,7 @@
 
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"
-#include "pmdplan/core/random_source.hpp"
+#include "pmdplan/core/sequences/unit_points.hpp"
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
@@ -51,8 +51,10 @@ class PmdPlannerBase {
   void setupProblem();
   /// Drops the path and the statistics.
   void clearResults();
-  /// Reseeds the random source and starts the clock (after the planner's clear()).
-  void beginRun();
+  /// Starts the sample sequences again from the seed and starts the clock (after the planner's
+  /// clear()). `segmentPointDimension`: 1 for a planner that draws points of the start-goal segment
+  /// from the sequence (PointStream::SegmentPoint), else 0.
+  void beginRun(int segmentPointDimension = 0);
   /// Checks c_ini, then c_goal, counting each check: the status to end with if one collides.
   std::optional<PlannerStatus> checkStartAndGoalStates();
   /// Closes the statistics with the status, the clock and the roadmap's size.
@@ -68,7 +70,7 @@ class PmdPlannerBase {
   Configuration goal_;
   std::optional<ArmSegmentSampler> armSampler_;
 
-  RandomSource random_;
+  UnitPoints points_;
   std::vector<Configuration> path_;
   std::vector<Configuration> unsmoothedPath_;
   PlanningStatistics statistics_;

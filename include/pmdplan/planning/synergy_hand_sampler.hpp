@@ -29,7 +29,7 @@ class SynergyHandSampler final : public HandSampler {
   /// Own-axis joints + 1 PMD: 2 for the SAH.
   int initialDimension() const override { return ownAxisCount() + 1; }
   int maxDimension() const override { return ownAxisCount() + directionCount(); }
-  void sample(int dimension, RandomSource& random, Configuration& q) const override;
+  void sample(int dimension, UnitPoints& points, Configuration& q) const override;
   std::string name() const override { return "pmd"; }
 
   int ownAxisCount() const { return static_cast<int>(ownAxisSlots_.size()); }

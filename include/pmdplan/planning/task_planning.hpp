@@ -3,7 +3,7 @@
 // of the chosen mode and the PMD roadmap planner, wired the same way for the CLI and the
 // benchmarks. A goal that grasps the task's target is planned in two phases (grasp_approach.hpp):
 // the roadmap planner's path to the pre-grasp (the approach), then the closing segment to the goal.
-// The lazy planner is wired the same way; the progress callback is the paper planner's only.
+// The lazy and the bidirectional planners are wired the same way; the progress callback is the paper planner's only.
 #include <optional>
 #include <vector>
 
@@ -17,8 +17,9 @@ namespace pmdplan {
 
 /// Which of our planners plans the approach.
 enum class RoadmapAlgorithm {
-  Paper,  ///< the paper's PMD roadmap (pmd_roadmap_planner.hpp): `pmd`, `full`
-  Lazy,   ///< the lazy PMD roadmap (lazy_pmd_planner.hpp): `pmd-lazy`
+  Paper,    ///< the paper's PMD roadmap (pmd_roadmap_planner.hpp): `pmd`, `full`
+  Lazy,     ///< the lazy PMD roadmap (lazy_pmd_planner.hpp): `pmd-lazy`
+  Connect,  ///< the bidirectional PMD trees (pmd_connect_planner.hpp): `pmd-connect`
 };
 
 struct TaskPlanningOptions {

@@ -273,12 +273,12 @@ void CheckerState::screenLanes(const double* poses, int count, bool tight) {
   screenSse2(*this, poses, count, tight);
 }
 
-void CheckerState::screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
-                               double* safe, double* pairGaps) {
+int CheckerState::screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
+                              double* safe, double* pairGaps, const bool* stopAt) {
   const std::size_t selfCount = selfPairs_.size(), linkCount = geometricLinks_.size(), pairs = pairCount();
   if (!(staticSelfCollisions_.empty() && staticEnvironmentCollisions_.empty())) {
     for (int lane = 0; lane < count; ++lane) valid[lane] = false, safe[lane] = 0.0, ++statistics_.provenColliding;
-    return;
+    return stopAt && !*stopAt ? 0 : count;
   }
   for (int lane = 0; lane < count; ++lane) laneScalar_[lane].clear();
   screenLanes(poses, count, pairGaps != nullptr);
@@ -311,6 +311,7 @@ void CheckerState::screenBatch(const Configuration* const* configurations, int c
     if (overlapping) {
       ++statistics_.provenColliding;
       valid[lane] = false;
+      if (stopAt && !*stopAt) return lane;
       continue;
     }
     if (pairGaps)
@@ -324,7 +325,9 @@ void CheckerState::screenBatch(const Configuration* const* configurations, int c
     } else {
       valid[lane] = confirmUncertain(*configurations[lane]);
     }
+    if (stopAt && valid[lane] == *stopAt) return lane;
   }
+  return count;
 }
 
 }  // namespace pmdplan::fast

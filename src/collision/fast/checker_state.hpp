@@ -71,9 +71,11 @@ struct CheckerState {
   /// FCL on the pairs in uncertain_ at q: is q free?
   bool confirmUncertain(const Configuration& q);
 
-  // The batch screen (batch_screen.cpp): kLanes configurations at once.
-  void screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
-                   double* safe, double* pairGaps);
+  // The batch screen (batch_screen.cpp): kLanes configurations at once. With `stopAt`, the lanes
+  // are decided in order only until one's verdict is *stopAt: its index is returned and the lanes
+  // after it are left undecided. Otherwise (or when none is) returns count.
+  int screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid, double* safe,
+                  double* pairGaps, const bool* stopAt = nullptr);
   // screenBatch's lane-vector stage: fills pairLaneGaps_, laneSafe_ and laneScalar_ in vectors
   // laneWidth(simdLevel_) wide. `tight`: every pair's gap as tight as these tests get it (the
   // caller keeps them, as motion-check certificates), not just tight enough to prove.

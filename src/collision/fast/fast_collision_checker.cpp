@@ -25,6 +25,25 @@ void FastCollisionChecker::setSimdLevel(SimdLevel level) {
 
 namespace {
 
+/// The batch's joint values into the kinematics' lanes (spare lanes repeat the last configuration),
+/// then its forward kinematics into the pose scratch.
+void loadLanes(fast::CheckerState& s, const Configuration* const* configurations, int count) {
+  const int dof = s.kinematics_.dof();
+  double joints[64 * FastCollisionChecker::kLanes];
+  std::vector<double> wide;
+  double* q = joints;
+  if (dof > 64) {
+    wide.resize(static_cast<std::size_t>(dof) * FastCollisionChecker::kLanes);
+    q = wide.data();
+  }
+  for (int lane = 0; lane < FastCollisionChecker::kLanes; ++lane) {
+    const Configuration& c = *configurations[std::min(lane, count - 1)];
+    if (c.size() != dof) throw std::invalid_argument("configuration size does not match the robot");
+    for (int i = 0; i < dof; ++i) q[i * FastCollisionChecker::kLanes + lane] = c[i];
+  }
+  s.kinematics_.computeBatch(q, s.poseScratch_.data());
+}
+
 /// isValid / isArmValid: one configuration through the scalar screen.
 bool checkOne(fast::CheckerState& s, const Configuration& q, bool armOnly) {
   ++s.checks_;
@@ -51,24 +70,32 @@ void FastCollisionChecker::checkBatch(const Configuration* const* configurations
     valid[0] = s.decide(*configurations[0], s.poseScratch_.data(), 1, 0, false, &safeDisplacement[0], pairGaps);
     return;
   }
-  double joints[64 * kLanes];
-  std::vector<double> wide;
-  double* q = joints;
-  if (dof > 64) {
-    wide.resize(static_cast<std::size_t>(dof) * kLanes);
-    q = wide.data();
-  }
-  for (int lane = 0; lane < kLanes; ++lane) {
-    const Configuration& c = *configurations[std::min(lane, count - 1)];  // spare lanes repeat the last
-    if (c.size() != dof) throw std::invalid_argument("configuration size does not match the robot");
-    for (int i = 0; i < dof; ++i) q[i * kLanes + lane] = c[i];
-  }
-  s.kinematics_.computeBatch(q, s.poseScratch_.data());
+  loadLanes(s, configurations, count);
   s.checks_ += static_cast<std::size_t>(count);
   s.screenBatch(configurations, count, s.poseScratch_.data(), valid, safeDisplacement, pairGaps);
 }
 
 std::size_t FastCollisionChecker::checkCount() const { return state_->checks_; }
+
+int FastCollisionChecker::firstWithValidity(const Configuration* const* configurations, int count, bool wanted) {
+  fast::CheckerState& s = *state_;
+  bool valid[kLanes];
+  double safe[kLanes];
+  for (int first = 0; first < count; first += kLanes) {
+    const int batch = std::min(kLanes, count - first);
+    if (batch == 1) {
+      checkBatch(configurations + first, 1, valid, safe);
+      if (valid[0] == wanted) return first;
+      continue;
+    }
+    loadLanes(s, configurations + first, batch);
+    s.checks_ += static_cast<std::size_t>(batch);
+    const int found =
+        s.screenBatch(configurations + first, batch, s.poseScratch_.data(), valid, safe, nullptr, &wanted);
+    if (found < batch) return first + found;
+  }
+  return count;
+}
 
 void FastCollisionChecker::setMotion(const Configuration& from, const Configuration& to) {
   state_->setMotion(from, to);

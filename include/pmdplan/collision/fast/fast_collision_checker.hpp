@@ -49,6 +49,9 @@ class FastCollisionChecker : public StateValidator {
   bool isValid(const Configuration& q) override;
   bool isArmValid(const Configuration& q) override;
   std::size_t checkCount() const override;
+  /// kLanes configurations at a time through the batch screen; within a batch the lanes the lane
+  /// vectors leave open are decided one by one only up to the one found.
+  int firstWithValidity(const Configuration* const* configurations, int count, bool valid) override;
 
   /// Up to kLanes configurations at once (forward kinematics batched): valid[i] as isValid, and
   /// safe[i] > 0 when the geometric stages alone proved it free: ScreenResult's safeDisplacement,

@@ -1,0 +1,186 @@
+#include "pmdplan/planning/pmd_connect_planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "planning/toy_problem.hpp"
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/planning/synergy_hand_sampler.hpp"
+
+namespace pmdplan {
+namespace {
+
+/// A bidirectional planner with its validators, for one toy run.
+struct ConnectToyRun {
+  toy::WallStateValidator stateValidator;
+  toy::WallMotionValidator motionValidator;
+  PmdConnectPlanner planner;
+
+  explicit ConnectToyRun(PlannerParameters parameters, toy::Wall wall = {}, const Configuration& start = toy::start(),
+                         const Configuration& goal = toy::goal())
+      : stateValidator(wall),
+        motionValidator(wall),
+        planner(toy::space(), stateValidator, motionValidator,
+                std::make_unique<SynergyHandSampler>(toy::space(), toy::synergyModel()), parameters) {
+    planner.setStartAndGoal(start, goal);
+  }
+};
+
+PlannerParameters withSeed(std::uint64_t seed) {
+  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  parameters.seed = seed;
+  parameters.timeLimit = 60.0;
+  return parameters;
+}
+
+TEST(PmdConnectPlanner, SolvesTheNarrowPassageWithValidPaths) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    ConnectToyRun run(withSeed(seed));
+    ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
+    const std::vector<Configuration>& path = run.planner.path();
+    ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
+    EXPECT_EQ(path.front(), toy::start());
+    EXPECT_EQ(path.back(), toy::goal());
+    EXPECT_TRUE(toy::densePathIsFree(path)) << "seed " << seed;
+    EXPECT_TRUE(toy::densePathIsFree(run.planner.unsmoothedPath())) << "seed " << seed;
+    for (const Configuration& q : path) EXPECT_TRUE(toy::space().withinLimits(q, 0.0));
+
+    const PlanningStatistics& stats = run.planner.statistics();
+    EXPECT_EQ(stats.pathNodes, path.size());
+    EXPECT_LE(stats.pathLength, stats.pathLengthBeforeSmoothing + 1e-12);
+    EXPECT_EQ(stats.roadmapNodes, run.planner.tree(0).liveCount() + run.planner.tree(1).liveCount());
+    EXPECT_EQ(stats.stateChecks, run.stateValidator.checkCount());
+    EXPECT_EQ(stats.motionChecks, run.motionValidator.statesChecked());
+    EXPECT_GT(stats.samples, 0u);
+    for (const auto& [dimension, count] : stats.nodesByHandDimension) {
+      EXPECT_GE(dimension, 2) << "hands from the thumb base and at least one PMD";
+      EXPECT_LE(dimension, 4);
+    }
+  }
+}
+
+// Lazy: the motion checks settle only segments of candidate paths; every segment of the path the
+// trees returned was certified.
+TEST(PmdConnectPlanner, MotionChecksOnlyCandidatePaths) {
+  ConnectToyRun run(withSeed(3));
+  ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
+  std::size_t checked = 0;
+  std::size_t segments = 0;
+  for (std::size_t which : {PmdConnectPlanner::kStartTree, PmdConnectPlanner::kGoalTree}) {
+    const ConnectTree& tree = run.planner.tree(which);
+    for (ConnectTree::Node n = 1; n < tree.size(); ++n) {
+      if (!tree.isLive(n)) continue;
+      ++segments;
+      checked += tree.segmentChecked(n) ? 1 : 0;
+    }
+  }
+  EXPECT_GE(checked, run.planner.unsmoothedPath().size() - 2) << "the path's segments, the meeting node's two sides";
+  // The straight segment, the candidate paths' segments and the smoothing's shortcuts.
+  EXPECT_LT(run.motionValidator.calls(), 1 + segments + run.planner.unsmoothedPath().size() * 2);
+}
+
+TEST(PmdConnectPlanner, AFreeStraightSegmentIsOneMotionCheckAndNoSample) {
+  ConnectToyRun run(withSeed(1), toy::Wall{}, toy::start(), toy::fromUnit({0.3, 0.5, 0.3, 0.9, 0.7, 0.5}));
+  ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
+  EXPECT_EQ(run.planner.path().size(), 2u);
+  EXPECT_EQ(run.planner.statistics().samples, 0u);
+  EXPECT_EQ(run.motionValidator.calls(), 1u);
+}
+
+TEST(PmdConnectPlanner, TheSameSeedGivesTheSamePath) {
+  ConnectToyRun first(withSeed(17));
+  ConnectToyRun second(withSeed(17));
+  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
+  ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
+  EXPECT_EQ(first.planner.path(), second.planner.path());
+  EXPECT_EQ(first.planner.unsmoothedPath(), second.planner.unsmoothedPath());
+  EXPECT_EQ(first.planner.statistics().samples, second.planner.statistics().samples);
+  EXPECT_EQ(first.planner.statistics().stateChecks, second.planner.statistics().stateChecks);
+  EXPECT_EQ(first.planner.statistics().motionChecks, second.planner.statistics().motionChecks);
+  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved) << "solve() again repeats the run";
+  EXPECT_EQ(first.planner.path(), second.planner.path());
+
+  std::set<std::vector<double>> distinct;
+  for (std::uint64_t seed = 20; seed < 25; ++seed) {
+    ConnectToyRun other(withSeed(seed));
+    ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
+    const Configuration& middle = other.planner.unsmoothedPath()[1];
+    distinct.insert(std::vector<double>(middle.data(), middle.data() + middle.size()));
+  }
+  EXPECT_GT(distinct.size(), 1u) << "other seeds sample other nodes";
+}
+
+TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
+  PlannerParameters parameters = withSeed(2);
+  parameters.maxSamples = 500;
+  ConnectToyRun closed(parameters, toy::Wall{false});
+  EXPECT_EQ(closed.planner.solve(), PlannerStatus::SampleLimit);
+  EXPECT_TRUE(closed.planner.path().empty());
+  EXPECT_GE(closed.planner.statistics().samples, 500u);
+  EXPECT_EQ(closed.planner.statistics().finalArmHalfSize, 1.0) << "grown to the whole arm box";
+
+  // Without growth every sample's box is rho_a: the passage is still found (it lies on the segment).
+  parameters = withSeed(2);
+  parameters.connect.armGrowth = 1.0;
+  ConnectToyRun fixed(parameters);
+  ASSERT_EQ(fixed.planner.solve(), PlannerStatus::Solved);
+  EXPECT_EQ(fixed.planner.statistics().finalArmHalfSize, parameters.initialArmHalfSize);
+  for (const Configuration& q : fixed.planner.unsmoothedPath()) {
+    const Eigen::VectorXd u = toy::space().normalise(q);
+    EXPECT_NEAR(u[1], 0.5, parameters.initialArmHalfSize + 1e-12) << "the elbow stays in the box around the segment";
+  }
+}
+
+TEST(PmdConnectPlanner, ACollidingStartOrGoalIsReported) {
+  const Configuration inWall = toy::fromUnit({0.5, 0.9, 0.3, 0.9, 0.9, 0.5});
+  ConnectToyRun badStart(withSeed(1), toy::Wall{}, inWall, toy::goal());
+  EXPECT_EQ(badStart.planner.solve(), PlannerStatus::InvalidStart);
+  ConnectToyRun badGoal(withSeed(1), toy::Wall{}, toy::start(), inWall);
+  EXPECT_EQ(badGoal.planner.solve(), PlannerStatus::InvalidGoal);
+}
+
+TEST(PmdConnectPlanner, ShortStepsProbesOffAndEverySequenceStillSolve) {
+  for (const auto& change : std::vector<void (*)(PlannerParameters&)>{
+           [](PlannerParameters& p) { p.connect.rangeFactor = 0.1; },
+           [](PlannerParameters& p) { p.connect.rangeFactor = std::numeric_limits<double>::infinity(); },
+           [](PlannerParameters& p) { p.connect.probes = 0; },
+           [](PlannerParameters& p) { p.sequence = SampleSequence::Halton; },
+           [](PlannerParameters& p) { p.sequence = SampleSequence::Sdk; }}) {
+    PlannerParameters parameters = withSeed(5);
+    change(parameters);
+    ConnectToyRun run(parameters);
+    ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
+    EXPECT_TRUE(toy::densePathIsFree(run.planner.path()));
+    EXPECT_TRUE(toy::densePathIsFree(run.planner.unsmoothedPath()));
+  }
+}
+
+TEST(PmdConnectPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
+  const auto expectRejected = [](const std::string& flag, auto change) {
+    PlannerParameters parameters = withSeed(1);
+    change(parameters.connect);
+    ConnectToyRun run(parameters);
+    try {
+      run.planner.solve();
+      ADD_FAILURE() << flag << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), flag);
+      EXPECT_FALSE(e.message().empty());
+    }
+  };
+  expectRejected("connect-range", [](PmdConnectSettings& s) { s.rangeFactor = 0.0; });
+  expectRejected("connect-range", [](PmdConnectSettings& s) { s.rangeFactor = std::nan(""); });
+  expectRejected("connect-round", [](PmdConnectSettings& s) { s.roundSamples = 0; });
+  expectRejected("connect-arm-growth", [](PmdConnectSettings& s) { s.armGrowth = 0.5; });
+  expectRejected("connect-arm-growth", [](PmdConnectSettings& s) { s.armGrowth = INFINITY; });
+  expectRejected("connect-probes", [](PmdConnectSettings& s) { s.probes = 65; });
+}
+
+}  // namespace
+}  // namespace pmdplan
