@@ -12,6 +12,9 @@
 // primitive a triangulated STL (circumscribed; tests/collision/primitive_meshes.hpp), written to a
 // temporary folder at start.
 //
+// `fast-single` is the fast checker one configuration at a time (isValid), as a planner checks its
+// samples; `fast` and `fast-N` take eight at a time.
+//
 //   collision_check_bench [--benchmark_min_time=0.2] [--benchmark_filter=...]
 //       [--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true]  (on a shared machine)
 #include <benchmark/benchmark.h>
@@ -161,10 +164,14 @@ TaskData& taskData(const std::string& name) {
 
 const std::vector<Configuration>& mix(TaskData& d, int which) { return which == 0 ? d.planStates : d.randomStates; }
 
+/// How checkStates asks: the exact checker one by one, the fast one in batches or one by one.
+enum class Asking { Exact, FastBatch, FastSingle };
+
 // One iteration checks kLanes configurations: the exact checker one by one, the fast checker in one
 // batch (its forward kinematics and geometric stages run over all of them at once, in lane vectors
-// `laneWidth` wide); times are per configuration.
-void checkStates(benchmark::State& state, const std::string& name, bool fast, int which, SimdLevel level) {
+// `laneWidth` wide) or, as the planners check their samples, one by one (isValid: the scalar
+// screen); times are per configuration.
+void checkStates(benchmark::State& state, const std::string& name, Asking asking, int which, SimdLevel level) {
   auto& d = taskData(name);
   d.fast->setSimdLevel(level);
   constexpr int kLanes = FastCollisionChecker::kLanes;
@@ -174,13 +181,14 @@ void checkStates(benchmark::State& state, const std::string& name, bool fast, in
     const Configuration* batch[kLanes];
     for (int k = 0; k < kLanes; ++k) batch[k] = &states[(i + static_cast<std::size_t>(k)) % states.size()];
     i = (i + kLanes) % states.size();
-    if (fast) {
+    if (asking == Asking::FastBatch) {
       bool ok[kLanes];
       double safe[kLanes];
       d.fast->checkBatch(batch, kLanes, ok, safe);
       for (const bool v : ok) valid += v;
     } else {
-      for (const Configuration* q : batch) valid += d.exact->isValid(*q);
+      StateValidator& one = asking == Asking::Exact ? static_cast<StateValidator&>(*d.exact) : *d.fast;
+      for (const Configuration* q : batch) valid += one.isValid(*q);
     }
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * kLanes);
@@ -235,13 +243,17 @@ int main(int argc, char** argv) {
     const SimdLevel narrowest = name.rfind("mesh:", 0) == 0 ? widest : SimdLevel::sse2;
     for (const auto& [which, label] : {std::pair{0, "plan"}, std::pair{1, "random"}}) {
       benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/exact").c_str(), [=](benchmark::State& s) {
-        checkStates(s, name, false, which, widest);
+        checkStates(s, name, Asking::Exact, which, widest);
+      })->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/fast-single").c_str(), [=](benchmark::State& s) {
+        checkStates(s, name, Asking::FastSingle, which, widest);
       })->Unit(benchmark::kMicrosecond);
       for (const SimdLevel level : {SimdLevel::avx512, SimdLevel::avx2, SimdLevel::sse2}) {
         if (laneWidth(level) > laneWidth(widest) || laneWidth(level) < laneWidth(narrowest)) continue;
         const std::string suffix = level == widest ? "" : "-" + std::to_string(laneWidth(level));
-        benchmark::RegisterBenchmark(("check/" + name + "/" + label + "/fast" + suffix).c_str(),
-                                     [=](benchmark::State& s) { checkStates(s, name, true, which, level); })
+        benchmark::RegisterBenchmark(
+            ("check/" + name + "/" + label + "/fast" + suffix).c_str(),
+            [=](benchmark::State& s) { checkStates(s, name, Asking::FastBatch, which, level); })
             ->Unit(benchmark::kMicrosecond);
       }
     }

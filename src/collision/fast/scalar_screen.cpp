@@ -1,6 +1,6 @@
 // The fast checker's scalar screen: the geometric stages of one configuration (isValid,
 // isArmValid, a lone state of checkBatch, screen) — the link bounds of every pair in branch-free
-// passes, then the narrow phase (narrow_phase.cpp) for the pairs whose bounds meet, then FCL for
+// passes (the environment's, then the robot's own), then the narrow phase (narrow_phase.cpp) for the pairs whose bounds meet, then FCL for
 // the pairs it leaves uncertain.
 #include <algorithm>
 #include <cmath>
@@ -28,10 +28,44 @@ double CheckerState::screenLane(const double* poses, int stride, int lane, bool 
   for (int l : boundLinks_) placeBound(l);
   double safe = kInfinity;
   bool flagged = false;
+  const std::size_t selfCount = selfPairs_.size();  // the pairGaps layout: self pairs, then link x obstacle
+
+  // Environment first: every moving link against every obstacle (static links were decided once),
+  // the link bounds first in one pass per obstacle. Most configurations a planner draws and rejects
+  // put a finger or the palm into an object, so a proven overlap here ends the check before the
+  // many close finger pairs of the self pass are measured; a free configuration needs both passes
+  // anyway. Skipped for the arm alone.
+  if (!armOnly) {
+    const std::size_t linkCount = geometricLinks_.size();
+    for (std::size_t i = 0; i < linkCount; ++i) {
+      const auto l = static_cast<std::size_t>(geometricLinks_[i]);
+      geometricX_[i] = boundX_[l], geometricY_[i] = boundY_[l], geometricZ_[i] = boundZ_[l];
+    }
+    for (std::size_t o = 0; o < obstacles_.size(); ++o)
+      sphereGaps(obstacles_[o].part, geometricX_.data(), geometricY_.data(), geometricZ_.data(),
+                 geometricBoundR_.data(), static_cast<int>(linkCount), obstacleGaps_.data() + o * linkCount);
+    for (std::size_t o = 0; o < obstacles_.size(); ++o) {
+      const double* gaps = obstacleGaps_.data() + o * linkCount;
+      for (std::size_t i = 0; i < linkCount; ++i) {
+        double gap = gaps[i];
+        if (!(gap > band_)) {
+          const int l = geometricLinks_[i];
+          const Outcome outcome = linkObstacleContact(l, o, gap);
+          if (outcome != Outcome::Apart) {
+            flagged = true;
+            if (pairGaps) pairGaps[selfCount + o * linkCount + i] = 0.0;
+            if (onFlag(Flag{false, l, static_cast<int>(o), outcome})) return -1.0;
+            continue;
+          }
+        }
+        if (pairGaps) pairGaps[selfCount + o * linkCount + i] = gap;
+        safe = std::min(safe, gap * linkShare_[i]);
+      }
+    }
+  }
 
   // Self: the link bounds of every pair in one branch-free pass (it vectorises), then the pairs
   // whose bounds come within the band, part by part.
-  const std::size_t selfCount = selfPairs_.size();
   {
     const int* pa = pairA_.data();
     const int* pb = pairB_.data();
@@ -61,36 +95,6 @@ double CheckerState::screenLane(const double* poses, int stride, int lane, bool 
     }
     if (pairGaps) pairGaps[p] = gap;
     safe = std::min(safe, gap * pairShare_[p]);
-  }
-  if (armOnly) return flagged ? 0.0 : safe;
-
-  // Environment: every moving link against every obstacle (static links were decided once), the
-  // link bounds first in one pass per obstacle.
-  const std::size_t linkCount = geometricLinks_.size();
-  for (std::size_t i = 0; i < linkCount; ++i) {
-    const auto l = static_cast<std::size_t>(geometricLinks_[i]);
-    geometricX_[i] = boundX_[l], geometricY_[i] = boundY_[l], geometricZ_[i] = boundZ_[l];
-  }
-  for (std::size_t o = 0; o < obstacles_.size(); ++o)
-    sphereGaps(obstacles_[o].part, geometricX_.data(), geometricY_.data(), geometricZ_.data(), geometricBoundR_.data(),
-               static_cast<int>(linkCount), obstacleGaps_.data() + o * linkCount);
-  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
-    const double* gaps = obstacleGaps_.data() + o * linkCount;
-    for (std::size_t i = 0; i < linkCount; ++i) {
-      double gap = gaps[i];
-      if (!(gap > band_)) {
-        const int l = geometricLinks_[i];
-        const Outcome outcome = linkObstacleContact(l, o, gap);
-        if (outcome != Outcome::Apart) {
-          flagged = true;
-          if (pairGaps) pairGaps[selfCount + o * linkCount + i] = 0.0;
-          if (onFlag(Flag{false, l, static_cast<int>(o), outcome})) return -1.0;
-          continue;
-        }
-      }
-      if (pairGaps) pairGaps[selfCount + o * linkCount + i] = gap;
-      safe = std::min(safe, gap * linkShare_[i]);
-    }
   }
   return flagged ? 0.0 : safe;
 }
