@@ -1,7 +1,7 @@
 // The fast checker's scalar screen: the geometric stages of one configuration (isValid,
 // isArmValid, a lone state of checkBatch, screen) — the link bounds of every pair in branch-free
-// passes (the environment's, then the robot's own), then the narrow phase (narrow_phase.cpp) for the pairs whose bounds meet, then FCL for
-// the pairs it leaves uncertain.
+// passes (the environment's, then the robot's own), then the narrow phase (narrow_phase.cpp) for the pairs whose bounds
+// meet, then FCL for the pairs it leaves uncertain.
 #include <algorithm>
 #include <cmath>
 #include <limits>
