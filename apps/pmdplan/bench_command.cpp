@@ -147,7 +147,7 @@ int report(const BenchOptions& o, const CampaignInputs& inputs) {
 
 int run(const CommandLine& c) {
   const BenchOptions o = benchOptions(c);
-  const CampaignRanks ranks;
+  CampaignRanks ranks;
   CampaignInputs inputs = loadCampaignInputs(o);
   if (o.reportOnly) return ranks.first() ? report(o, inputs) : 0;
   const std::string started = utcNow();

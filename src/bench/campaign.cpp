@@ -28,14 +28,6 @@ std::vector<CampaignJob> campaignJobs(const BenchOptions& options) {
   return jobs;
 }
 
-std::vector<std::size_t> jobsOfRank(std::size_t jobCount, int rank, int ranks) {
-  if (ranks < 1 || rank < 0 || rank >= ranks) throw std::invalid_argument("jobsOfRank: rank out of range");
-  std::vector<std::size_t> mine;
-  for (std::size_t j = static_cast<std::size_t>(rank); j < jobCount; j += static_cast<std::size_t>(ranks))
-    mine.push_back(j);
-  return mine;
-}
-
 CampaignInputs loadCampaignInputs(const BenchOptions& options) {
   std::vector<Task> tasks;
   for (const auto& name : options.tasks) tasks.push_back(loadTaskByName(name));
@@ -51,9 +43,9 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options) {
   return inputs;
 }
 
-std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
-                                       const std::vector<std::size_t>& jobIndices, const CampaignProgress& progress,
-                                       CampaignJournal* journal) {
+std::map<std::size_t, RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
+                                                 const CampaignJobSource& nextJob, const CampaignProgress& progress,
+                                                 CampaignJournal* journal) {
   const std::vector<CampaignJob> jobs = campaignJobs(options);
   std::vector<PlannerEntry> planners;
   for (const auto& name : options.planners) {
@@ -63,11 +55,11 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
     planners.push_back(*entry);
   }
   if (!options.paths.empty()) createOutputFolder(options.paths, "--paths");
-  std::vector<RunRecord> records;
-  for (const std::size_t index : jobIndices) {
+  std::map<std::size_t, RunRecord> records;
+  for (std::size_t index; (index = nextJob()) < jobs.size();) {
     if (const RunRecord* done = journal ? journal->find(index) : nullptr) {
-      records.push_back(*done);
-      if (progress) progress(records.size(), jobIndices.size(), records.back());
+      records[index] = *done;
+      if (progress) progress(index + 1, jobs.size(), *done);
       continue;
     }
     const CampaignJob& job = jobs.at(index);
@@ -102,8 +94,8 @@ std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInpu
       record->planningTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     }
     if (journal) journal->append(index, *record);
-    records.push_back(*record);
-    if (progress) progress(records.size(), jobIndices.size(), records.back());
+    records[index] = *record;
+    if (progress) progress(index + 1, jobs.size(), *record);
   }
   return records;
 }
@@ -121,17 +113,15 @@ std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options) {
   return records;
 }
 
-std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, const CampaignRanks& ranks,
+std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, CampaignRanks& ranks,
                                    const CampaignProgress& progress) {
   const std::size_t jobCount = campaignJobs(options).size();
-  const std::vector<std::size_t> mine = jobsOfRank(jobCount, ranks.rank(), ranks.size());
   std::optional<CampaignJournal> journal;
   if (!options.journal.empty()) journal.emplace(options.journal, options, ranks.rank());
-  const std::vector<RunRecord> records =
-      runCampaignJobs(options, inputs, mine, progress, journal ? &*journal : nullptr);
+  const std::map<std::size_t, RunRecord> mine = runCampaignJobs(
+      options, inputs, [&ranks] { return ranks.takeJob(); }, progress, journal ? &*journal : nullptr);
   std::string text;
-  for (std::size_t i = 0; i < records.size(); ++i)
-    text += std::to_string(mine[i]) + "\t" + encodeRunRecord(records[i]) + "\n";
+  for (const auto& [index, record] : mine) text += std::to_string(index) + "\t" + encodeRunRecord(record) + "\n";
   const std::vector<std::string> parts = ranks.gatherToFirst(text);
   if (!ranks.first()) return {};
   std::map<std::size_t, RunRecord> byJob;

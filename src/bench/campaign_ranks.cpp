@@ -16,6 +16,15 @@
 
 namespace pmdplan {
 
+#ifdef PMDPLAN_WITH_MPI
+struct CampaignRanks::SharedCounter {
+  MPI_Win window = MPI_WIN_NULL;
+  long long* value = nullptr;  ///< rank 0's counter, the next job index
+};
+#else
+struct CampaignRanks::SharedCounter {};
+#endif
+
 int launcherRankCount() {
   for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) {
     if (const char* value = std::getenv(variable)) {
@@ -34,6 +43,15 @@ CampaignRanks::CampaignRanks() {
     initialisedMpi_ = true;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    counter_ = std::make_unique<SharedCounter>();
+    const MPI_Aint bytes = rank_ == 0 ? static_cast<MPI_Aint>(sizeof(long long)) : 0;
+    MPI_Win_allocate(bytes, sizeof(long long), MPI_INFO_NULL, MPI_COMM_WORLD, &counter_->value, &counter_->window);
+    if (rank_ == 0) {
+      MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, counter_->window);
+      *counter_->value = 0;
+      MPI_Win_unlock(0, counter_->window);
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
   }
 #else
   if (launched > 1)
@@ -46,8 +64,23 @@ CampaignRanks::CampaignRanks() {
 
 CampaignRanks::~CampaignRanks() {
 #ifdef PMDPLAN_WITH_MPI
+  if (counter_) MPI_Win_free(&counter_->window);
   if (initialisedMpi_) MPI_Finalize();
 #endif
+}
+
+std::size_t CampaignRanks::takeJob() {
+#ifdef PMDPLAN_WITH_MPI
+  if (counter_) {
+    const long long one = 1;
+    long long taken = 0;
+    MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, counter_->window);
+    MPI_Fetch_and_op(&one, &taken, MPI_LONG_LONG, 0, 0, MPI_SUM, counter_->window);
+    MPI_Win_unlock(0, counter_->window);
+    return static_cast<std::size_t>(taken);
+  }
+#endif
+  return nextJob_++;
 }
 
 std::vector<std::string> CampaignRanks::gatherToFirst(const std::string& mine) const {

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <set>
 
 #include "pmdplan/bench/campaign_ranks.hpp"
 
@@ -26,20 +25,10 @@ TEST(Campaign, JobsAreTaskMajorThenPlannerThenRun) {
   EXPECT_EQ(jobs[23].planner, 2u);
 }
 
-TEST(Campaign, RanksSplitTheJobsIntoDisjointSetsThatCoverThemAll) {
-  for (const int ranks : {1, 2, 3, 7, 30}) {
-    std::set<std::size_t> seen;
-    std::size_t total = 0;
-    for (int r = 0; r < ranks; ++r) {
-      const auto mine = jobsOfRank(25, r, ranks);
-      total += mine.size();
-      seen.insert(mine.begin(), mine.end());
-      for (const std::size_t j : mine) EXPECT_EQ(j % static_cast<std::size_t>(ranks), static_cast<std::size_t>(r));
-    }
-    EXPECT_EQ(total, 25u) << ranks;
-    EXPECT_EQ(seen.size(), 25u) << ranks;
-  }
-  EXPECT_THROW(jobsOfRank(5, 2, 2), std::invalid_argument);
+TEST(Campaign, OneProcessTakesEveryJobInOrder) {
+  CampaignRanks ranks;  // not launched by mpirun: one rank
+  ASSERT_EQ(ranks.size(), 1);
+  for (std::size_t expected = 0; expected < 5; ++expected) EXPECT_EQ(ranks.takeJob(), expected);
 }
 
 TEST(Campaign, ReadsTheLaunchersRankCount) {

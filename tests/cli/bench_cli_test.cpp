@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <set>
 #include <sstream>
 
 #include "support/run_cli.hpp"
@@ -186,15 +187,35 @@ TEST(BenchCli, TwoMpiRanksGiveTheOneProcessCsvTimingsAside) {
   const auto one = runCli(dir, kCampaign + " --csv " + quoted(single));
   ASSERT_EQ(one.exitCode, 0) << one.out << one.err;
   // As root OpenMPI wants --allow-run-as-root; --oversubscribe lets 2 ranks run on any machine.
-  const std::string launcher = std::string(PMDPLAN_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") +
-                               " --oversubscribe -np 2 " + quoted(PMDPLAN_CLI_PATH) + " " + kCampaign + " --csv " +
-                               quoted(split) + " >" + quoted(dir.path() / "mpi.out") + " 2>&1";
-  ASSERT_EQ(std::system(launcher.c_str()), 0) << contents(dir.path() / "mpi.out");
+  const auto onTwoRanks = [&](const std::string& more) {
+    const std::string command = std::string(PMDPLAN_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") +
+                                " --oversubscribe -np 2 " + quoted(PMDPLAN_CLI_PATH) + " " + kCampaign + " --csv " +
+                                quoted(split) + more + " >" + quoted(dir.path() / "mpi.out") + " 2>&1";
+    return std::system(command.c_str());
+  };
+  ASSERT_EQ(onTwoRanks(""), 0) << contents(dir.path() / "mpi.out");
   EXPECT_NE(contents(dir.path() / "mpi.out").find("8 runs in"), std::string::npos);
   const std::string a = contents(single), b = contents(split);
   EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 9);
   EXPECT_EQ(withoutTimings(a), withoutTimings(b));
   EXPECT_NE(a.find("\ncan_on_table,ompl:RRTConnect,3,4,1,"), std::string::npos) << a;
+
+  // With a journal: the ranks take the jobs as they free up, so each job is in one rank's file,
+  // and the same command again resumes from both files, runs nothing and writes the same records.
+  const auto journal = dir.path() / "journal";
+  for (int pass = 0; pass < 2; ++pass) {
+    ASSERT_EQ(onTwoRanks(" --journal " + quoted(journal)), 0) << contents(dir.path() / "mpi.out");
+    std::multiset<std::string> jobs;
+    for (const char* file : {"rank0.jsonl", "rank1.jsonl"}) {
+      std::istringstream in(contents(journal / file));
+      std::string line;
+      std::getline(in, line);  // the campaign's header
+      while (std::getline(in, line)) jobs.insert(line.substr(0, line.find(',')));
+    }
+    EXPECT_EQ(jobs.size(), 8u) << "pass " << pass;
+    EXPECT_EQ(std::set<std::string>(jobs.begin(), jobs.end()).size(), 8u) << "each job once, pass " << pass;
+    EXPECT_EQ(withoutTimings(contents(split)), withoutTimings(a)) << "pass " << pass;
+  }
 }
 #endif
 

@@ -1,8 +1,9 @@
 #pragma once
-// A benchmark campaign: the flat list of (task, planner, run) jobs, split across ranks
-// deterministically (job j goes to rank j mod P, so every rank gets a mix of planners and tasks),
-// each job run in a forked child (forked_run.hpp), the records gathered on rank 0 in job order.
-// The records do not depend on how many ranks ran them, timings aside.
+// A benchmark campaign: the flat list of (task, planner, run) jobs, handed out one at a time to
+// whichever rank is free (CampaignRanks::takeJob), each job run in a forked child
+// (forked_run.hpp), the records gathered on rank 0 in job order. A job's record depends only on
+// the job (its seed is the campaign's seed + its run), not on the rank or how many ranks ran the
+// campaign, timings aside.
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -28,10 +29,12 @@ struct CampaignJob {
 
 /// Task-major, then planner, then run.
 std::vector<CampaignJob> campaignJobs(const BenchOptions& options);
-/// Indices of the jobs rank `rank` of `ranks` runs: j with j mod ranks == rank.
-std::vector<std::size_t> jobsOfRank(std::size_t jobCount, int rank, int ranks);
+/// The next job index to run (CampaignRanks::takeJob): each index once, in increasing order over
+/// all ranks; the campaign's job count or more when none is left.
+using CampaignJobSource = std::function<std::size_t()>;
 
-/// Called after each finished job of this rank: jobs done so far, this rank's job count, the record.
+/// Called after each finished job of this rank: the campaign's jobs taken so far (by all ranks,
+/// as far as this rank knows: its last job's index + 1), the campaign's job count, the record.
 using CampaignProgress = std::function<void(std::size_t done, std::size_t total, const RunRecord& record)>;
 
 /// Built once before any run, on every rank: the synergy model and each task's TaskBench, so a
@@ -46,14 +49,15 @@ struct CampaignInputs {
 /// options.checker.
 CampaignInputs loadCampaignInputs(const BenchOptions& options);
 
-/// Runs the jobs `jobIndices` (indices into campaignJobs(options)), each in a forked child that is
-/// killed after time limit + grace. Records come back in the order of `jobIndices`; a crashed,
+/// Runs the jobs `nextJob` hands out (indices into campaignJobs(options)) until it hands out none,
+/// each in a forked child that is killed after time limit + grace. Records come back by job index; a crashed,
 /// killed or failing child gives a record with solved = false, the reason in `failure` and the
 /// child's wall-clock time as its planning time. With a journal, jobs it holds are not run again
 /// and every job run is added to it.
-std::vector<RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
-                                       const std::vector<std::size_t>& jobIndices,
-                                       const CampaignProgress& progress = {}, CampaignJournal* journal = nullptr);
+std::map<std::size_t, RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
+                                                 const CampaignJobSource& nextJob,
+                                                 const CampaignProgress& progress = {},
+                                                 CampaignJournal* journal = nullptr);
 
 /// The records of the jobs options.journal holds, in job order, nothing run: the report of a
 /// campaign part way. Throws InputError as CampaignJournal::finishedJobs does.
@@ -61,7 +65,7 @@ std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options);
 
 /// The whole campaign on every rank of `ranks` (with options.journal, resumed from it): rank 0
 /// returns all records in job order, the other ranks return nothing.
-std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, const CampaignRanks& ranks,
+std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, CampaignRanks& ranks,
                                    const CampaignProgress& progress = {});
 
 }  // namespace pmdplan

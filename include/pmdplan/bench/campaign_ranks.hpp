@@ -3,6 +3,8 @@
 // MPI is initialised only when an MPI launcher started this process (its environment says so),
 // so a plain `pmdplan bench` never depends on an MPI runtime. A build without MPI refuses to run
 // under a launcher with more than one rank instead of running the campaign P times.
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,13 +22,23 @@ class CampaignRanks {
   int size() const { return size_; }
   bool first() const { return rank_ == 0; }
 
+  /// The campaign's next job index, shared by all ranks: the calls of all ranks together return
+  /// 0, 1, 2, … each once (an atomic counter on rank 0, MPI_Fetch_and_op). A rank takes a job when
+  /// it has finished the last, so ranks whose runs happen to be long (runs at the time limit) take
+  /// fewer and no rank waits for another at the end (a fixed split left one rank with most of the
+  /// long runs: docs/benchmarks.md, the speed-up of mpirun).
+  std::size_t takeJob();
+
   /// Every rank passes its text; rank 0 gets all of them in rank order, the others get nothing.
   std::vector<std::string> gatherToFirst(const std::string& mine) const;
 
  private:
+  struct SharedCounter;  ///< the MPI window of takeJob
   int rank_ = 0;
   int size_ = 1;
   bool initialisedMpi_ = false;
+  std::size_t nextJob_ = 0;  ///< takeJob's counter in a single process
+  std::unique_ptr<SharedCounter> counter_;
 };
 
 /// The rank count an MPI launcher announced in the environment (OpenMPI's OMPI_COMM_WORLD_SIZE,
