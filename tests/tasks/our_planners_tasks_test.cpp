@@ -13,11 +13,14 @@
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
+#include "support/sanitizer_build.hpp"
 
 namespace pmdplan {
 namespace {
 
-constexpr int kSeeds = 5;
+// Fewer seeds in the sanitizer build (tests/support/sanitizer_build.hpp): there each plan is slowed
+// several times, and the Release suite covers the seeds.
+constexpr int kSeeds = test::trials(5, 2);
 
 using TaskAndPlanner = std::tuple<std::string, RoadmapAlgorithm>;
 
