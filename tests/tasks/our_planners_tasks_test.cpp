@@ -20,7 +20,7 @@ namespace {
 
 // Fewer seeds in the sanitizer build (tests/support/sanitizer_build.hpp): there each plan is slowed
 // several times, and the Release suite covers the seeds.
-constexpr int kSeeds = test::trials(5, 2);
+constexpr int kSeeds = test::trials(5, 1);
 
 using TaskAndPlanner = std::tuple<std::string, RoadmapAlgorithm>;
 
