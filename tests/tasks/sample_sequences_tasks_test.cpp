@@ -12,11 +12,12 @@
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
+#include "support/sanitizer_build.hpp"
 
 namespace pmdplan {
 namespace {
 
-constexpr int kSeeds = 3;
+constexpr int kSeeds = test::trials(3, 1);  // one seed in the sanitizer build
 
 using Case = std::tuple<std::string, RoadmapAlgorithm, SampleSequence>;
 class SequenceOnTask : public ::testing::TestWithParam<Case> {};
