@@ -43,7 +43,7 @@ def test_settings_reach_the_planner(can_on_table, synergies):
     settings.smooth = False
     settings.arm_box_growth = "linear"
     assert "arm_box_growth='linear'" in repr(settings)
-    checker = pmdplan.CollisionChecker(can_on_table, "exact")
+    checker = pmdplan.CollisionChecker(can_on_table, "fast")
     result = pmdplan.plan(can_on_table, settings=settings, checker=checker, synergies=synergies)
     assert result.solved and result.seed == 5
     stats = result.statistics
