@@ -30,7 +30,7 @@
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/core/progress_line.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::bench_command {
 namespace {
 
 struct CommandLine {
@@ -208,4 +208,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::bench_command

@@ -16,7 +16,7 @@
 #include "pmdplan/world/task.hpp"
 #include "robot_setup.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::check_command {
 namespace {
 
 struct Options {
@@ -116,4 +116,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::check_command

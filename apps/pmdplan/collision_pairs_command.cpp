@@ -12,7 +12,7 @@
 #include "pmdplan/core/input_error.hpp"
 #include "robot_setup.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::collision_pairs_command {
 namespace {
 
 struct Options {
@@ -75,4 +75,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::collision_pairs_command

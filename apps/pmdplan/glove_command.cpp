@@ -18,7 +18,7 @@
 #include "pmdplan/synergy/hand_mapping_file.hpp"
 #include "pmdplan/synergy/synthetic_operator.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::glove_command {
 namespace {
 
 std::filesystem::path calibrationBeside(const std::filesystem::path& recording) {
@@ -133,4 +133,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::glove_command

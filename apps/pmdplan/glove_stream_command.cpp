@@ -44,7 +44,7 @@ void catchStopSignals() {
   for (const int signal : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal, &action, nullptr);
 }
 
-struct Options {
+struct StreamOptions {
   std::string device;
   std::string replay;
   std::string format = "auto";
@@ -63,7 +63,7 @@ struct Options {
   std::string out;
 };
 
-GloveRecording readReplay(const Options& o) {
+GloveRecording readReplay(const StreamOptions& o) {
   std::string format = o.format;
   const auto extension = std::filesystem::path(o.replay).extension();
   if (format == "auto")
@@ -73,7 +73,7 @@ GloveRecording readReplay(const Options& o) {
   throw InputError("", "--format", "expected csv, serial or auto, got '" + o.format + "'");
 }
 
-std::filesystem::path calibrationPath(const Options& o) {
+std::filesystem::path calibrationPath(const StreamOptions& o) {
   if (!o.calibration.empty()) return o.calibration;
   if (!o.replay.empty()) {
     const auto beside = std::filesystem::path(o.replay).replace_extension(".calibration.yaml");
@@ -118,7 +118,7 @@ double epochMilliseconds() {
   return std::chrono::duration<double, std::milli>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
-int run(const Options& o) {
+int runStream(const StreamOptions& o) {
   if (o.device.empty() == o.replay.empty())
     throw InputError(
         "", "--device",
@@ -265,7 +265,7 @@ int run(const Options& o) {
 }  // namespace
 
 std::function<int()> addGloveStreamCommand(CLI::App& glove) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<StreamOptions>();
   CLI::App* app = glove.add_subcommand("stream",
                                        "The glove live: a CyberGlove on a serial device (or a replayed recording) to "
                                        "the viewer and a recording, frame by frame");
@@ -303,7 +303,7 @@ std::function<int()> addGloveStreamCommand(CLI::App& glove) {
       "--out", o->out,
       "Viewer folder to write for --serve (default: the recording's name with -viewer, or glove-live-viewer)");
   addPackagePathOption(*app);
-  return [o] { return run(*o); };
+  return [o] { return runStream(*o); };
 }
 
 }  // namespace pmdplan::cli

@@ -26,7 +26,7 @@
 #include "pmdplan/world/task.hpp"
 #include "trajectory_output.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::plan_command {
 namespace {
 
 /// "pmd, full, pmd-lazy, pmd-connect": the roster's planners of ours, which `plan` runs.
@@ -176,4 +176,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::plan_command

@@ -14,7 +14,7 @@
 #include "pmdplan/model/resource_path.hpp"
 #include "robot_setup.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::robot_command {
 namespace {
 
 struct Options {
@@ -134,4 +134,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::robot_command

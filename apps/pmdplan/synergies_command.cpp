@@ -25,7 +25,7 @@
 #include "pmdplan/synergy/recording_analysis.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::synergies_command {
 namespace {
 
 struct Options {
@@ -343,4 +343,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::synergies_command

@@ -13,7 +13,7 @@
 #include "pmdplan/world/task.hpp"
 #include "trajectory_output.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::time_command {
 namespace {
 
 struct Options {
@@ -63,4 +63,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::time_command

@@ -11,7 +11,7 @@
 #include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/world/task.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::validate_command {
 namespace {
 
 struct Options {
@@ -66,4 +66,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::validate_command

@@ -3,7 +3,7 @@
 
 #include "command_registry.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::version_command {
 namespace {
 const CommandRegistrar registrar{"version", "Print the pmdplan version", [](CLI::App&) {
                                    return [] {
@@ -12,4 +12,4 @@ const CommandRegistrar registrar{"version", "Print the pmdplan version", [](CLI:
                                    };
                                  }};
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::version_command

@@ -20,7 +20,7 @@
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan::cli::view_command {
 namespace {
 
 struct Options {
@@ -126,4 +126,4 @@ const CommandRegistrar registrar{
     }};
 
 }  // namespace
-}  // namespace pmdplan::cli
+}  // namespace pmdplan::cli::view_command

@@ -1,31 +1,23 @@
 #include "pmdplan/planning/lazy_pmd_settings.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
-namespace {
-
-std::string text(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-}  // namespace
 
 void LazyPmdSettings::check() const {
   if (batch > 1'000'000) throw InputError("", "lazy-batch", "must be a whole number of arm boxes from 0 to 1000000");
   if (neighbours < 1) throw InputError("", "lazy-neighbours", "must be a whole number >= 1");
   if (!(radiusFactor > 0.0) || !std::isfinite(radiusFactor))
-    throw InputError("", "lazy-radius",
-                     "must be a positive, finite factor of the start-goal distance, got " + text(radiusFactor));
+    throw InputError(
+        "", "lazy-radius",
+        "must be a positive, finite factor of the start-goal distance, got " + messageNumberText(radiusFactor));
   if (probes > 64) throw InputError("", "lazy-probes", "must be a whole number from 0 to 64");
   if (!(armGrowth >= 1.0) || !std::isfinite(armGrowth))
-    throw InputError("", "lazy-arm-growth", "must be a finite factor >= 1, got " + text(armGrowth));
+    throw InputError("", "lazy-arm-growth", "must be a finite factor >= 1, got " + messageNumberText(armGrowth));
 }
 
 }  // namespace pmdplan

@@ -1,21 +1,15 @@
 #include "pmdplan/planning/planner_parameters.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 namespace {
 
 constexpr PlannerPreset kPresets[] = {PlannerPreset::Paper, PlannerPreset::Kautham, PlannerPreset::Wide};
-
-std::string text(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
 
 }  // namespace
 
@@ -61,13 +55,14 @@ PlannerParameters PlannerParameters::preset(PlannerPreset preset, HandSamplingMo
 void PlannerParameters::check() const {
   const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
   if (!positive(initialArmHalfSize) || initialArmHalfSize > 1.0)
-    throw InputError("", "rho-a",
-                     "must be a number in (0, 1] (normalised arm-joint units), got " + text(initialArmHalfSize));
+    throw InputError(
+        "", "rho-a",
+        "must be a number in (0, 1] (normalised arm-joint units), got " + messageNumberText(initialArmHalfSize));
   if (neighbourCount < 1) throw InputError("", "neighbours", "must be a whole number >= 1");
   if (!positive(neighbourThresholdFactor))
-    throw InputError(
-        "", "neighbour-threshold",
-        "must be a positive, finite factor of the start-goal distance, got " + text(neighbourThresholdFactor));
+    throw InputError("", "neighbour-threshold",
+                     "must be a positive, finite factor of the start-goal distance, got " +
+                         messageNumberText(neighbourThresholdFactor));
   if (armTrials < 1)
     throw InputError("", "arm-trials", "must be a whole number >= 1, got " + std::to_string(armTrials));
   if (handTrials < 1)
@@ -75,13 +70,15 @@ void PlannerParameters::check() const {
   if (minSweepVisits < 1) throw InputError("", "sweep-visits", "must be a whole number >= 1");
   if (maxSamples < 1) throw InputError("", "max-samples", "must be a whole number >= 1");
   if (!positive(pmdBox.kappa))
-    throw InputError("", "kappa",
-                     "must be a positive, finite number of standard deviations, got " + text(pmdBox.kappa));
+    throw InputError(
+        "", "kappa",
+        "must be a positive, finite number of standard deviations, got " + messageNumberText(pmdBox.kappa));
   if (pmdBox.maxDirections < 1)
     throw InputError("", "max-pmds", "must be a whole number >= 1, got " + std::to_string(pmdBox.maxDirections));
   if (!(timeLimit > 0.0) || (std::isfinite(timeLimit) && timeLimit > kMaxFiniteTimeLimitSeconds))
-    throw InputError("", "time-limit",
-                     "must be a positive number of seconds up to 1e6 (or inf: no limit), got " + text(timeLimit));
+    throw InputError(
+        "", "time-limit",
+        "must be a positive number of seconds up to 1e6 (or inf: no limit), got " + messageNumberText(timeLimit));
   lazy.check();
   connect.check();
 }

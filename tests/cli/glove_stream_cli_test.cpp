@@ -34,9 +34,9 @@ using namespace std::chrono_literals;
 using test::contents;
 using test::quoted;
 
-const std::filesystem::path kGloveData = std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "glove";
-const std::filesystem::path kSample = kGloveData / "synthetic_operator_sample.csv";
-const std::filesystem::path kCalibration = kGloveData / "synthetic_operator_sample.calibration.yaml";
+const std::filesystem::path kGloveDataDir = std::filesystem::path(PMDPLAN_TEST_DATA_DIR) / "glove";
+const std::filesystem::path kSample = kGloveDataDir / "synthetic_operator_sample.csv";
+const std::filesystem::path kCalibration = kGloveDataDir / "synthetic_operator_sample.calibration.yaml";
 
 pid_t spawn(const std::vector<std::string>& arguments, const std::filesystem::path& out,
             const std::filesystem::path& err) {

@@ -17,7 +17,7 @@ namespace {
 using test::runCli;
 using ::testing::HasSubstr;
 
-const std::filesystem::path kData = PMDPLAN_TEST_DATA_DIR;
+const std::filesystem::path kDataDir = PMDPLAN_TEST_DATA_DIR;
 
 using test::contents;
 using test::quoted;
@@ -25,7 +25,7 @@ using test::quoted;
 TEST(SynergyPlotsCli, ARecordingGivesBothFiguresBesideItsUsualOutput) {
   test::TempDir dir;
   const auto plots = dir.path() / "plots";
-  const auto result = runCli("synergies " + quoted(kData / "glove" / "synthetic_operator_sample.csv") +
+  const auto result = runCli("synergies " + quoted(kDataDir / "glove" / "synthetic_operator_sample.csv") +
                              " --json --plots " + quoted(plots));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_NO_THROW((void)nlohmann::json::parse(result.out)) << "the figures do not disturb the JSON on stdout";
@@ -39,8 +39,8 @@ TEST(SynergyPlotsCli, ARecordingGivesBothFiguresBesideItsUsualOutput) {
 TEST(SynergyPlotsCli, AModelFileGivesTheVarianceFigure) {
   test::TempDir dir;
   const auto plots = dir.path() / "plots";
-  const auto result =
-      runCli("synergies --show " + quoted(kData / "synergies" / "sah_tx90_default.yaml") + " --plots " + quoted(plots));
+  const auto result = runCli("synergies --show " + quoted(kDataDir / "synergies" / "sah_tx90_default.yaml") +
+                             " --plots " + quoted(plots));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(plots / "cumulative_variance.svg"));
   EXPECT_FALSE(std::filesystem::exists(plots / "joint_pairs.svg"));

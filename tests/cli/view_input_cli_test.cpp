@@ -12,6 +12,7 @@
 #include "pmdplan/world/task.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
+#include "support/viewer_document.hpp"
 
 namespace pmdplan {
 namespace {
@@ -32,12 +33,6 @@ PathFile endsOnly(const Task& task) {
                   {}};
 }
 
-nlohmann::json viewerDocument(const std::filesystem::path& folder) {
-  const std::string text = contents(folder / "viewer-data.js");
-  const auto begin = text.find('{');
-  return nlohmann::json::parse(text.substr(begin, text.rfind(';') - begin));
-}
-
 TEST(ViewInputCli, AnotherTaskWhoseEndsAreNotThePathsIsAnError) {
   test::TempDir dir;
   const auto file = dir.path() / "clutter.json";
@@ -50,7 +45,7 @@ TEST(ViewInputCli, AnotherTaskWhoseEndsAreNotThePathsIsAnError) {
   // Its own task given explicitly is fine, and the page has no warning.
   const auto own = runCli("view " + quoted(file) + " --task t_in_clutter --out " + quoted(dir.path() / "w"));
   ASSERT_EQ(own.exitCode, 0) << own.err;
-  EXPECT_TRUE(viewerDocument(dir.path() / "w")["warnings"].empty());
+  EXPECT_TRUE(test::viewerDocument(dir.path() / "w")["warnings"].empty());
 }
 
 TEST(ViewInputCli, EndsThatAreNotTheTasksGiveAWarningOnThePage) {
@@ -62,7 +57,7 @@ TEST(ViewInputCli, EndsThatAreNotTheTasksGiveAWarningOnThePage) {
   writePathFile(file, path);
   const auto result = runCli("view " + quoted(file) + " --out " + quoted(dir.path() / "v"));
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  const auto warnings = viewerDocument(dir.path() / "v")["warnings"];
+  const auto warnings = test::viewerDocument(dir.path() / "v")["warnings"];
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_THAT(warnings[0].get<std::string>(), HasSubstr("last point is not task can_on_table's goal"));
 }
@@ -73,7 +68,7 @@ TEST(ViewInputCli, EveryStateHasItsClearanceAndItsCollidingLinks) {
   const auto file = dir.path() / "straight.json";
   writePathFile(file, endsOnly(loadTaskByName("can_on_table")));
   ASSERT_EQ(runCli("view " + quoted(file) + " --out " + quoted(dir.path() / "v")).exitCode, 0);
-  const auto path = viewerDocument(dir.path() / "v")["path"];
+  const auto path = test::viewerDocument(dir.path() / "v")["path"];
   ASSERT_EQ(path["clearance"].size(), path["states"].size());
   ASSERT_EQ(path["colliding_links"].size(), path["states"].size());
   EXPECT_GT(path["clearance"].front().get<double>(), 0.0);

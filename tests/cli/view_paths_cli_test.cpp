@@ -12,6 +12,7 @@
 #include "pmdplan/world/task.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
+#include "support/viewer_document.hpp"
 
 namespace pmdplan {
 namespace {
@@ -29,12 +30,6 @@ PathFile straightPath(const Task& task, int waypoints, const std::string& planne
   for (int i = 0; i < waypoints; ++i)
     path.points.push_back(task.start + (task.goal - task.start) * (static_cast<double>(i) / (waypoints - 1)));
   return path;
-}
-
-nlohmann::json viewerDocument(const std::filesystem::path& folder) {
-  const std::string text = contents(folder / "viewer-data.js");
-  const auto begin = text.find('{');
-  return nlohmann::json::parse(text.substr(begin, text.rfind(';') - begin));
 }
 
 Configuration stateOf(const nlohmann::json& state) {
@@ -84,7 +79,7 @@ TEST_F(ViewPathsCli, TwoPathsOfOneTaskAreBothInTheViewerData) {
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_THAT(result.out, HasSubstr("2 paths"));
 
-  const auto data = viewerDocument(out);
+  const auto data = test::viewerDocument(out);
   EXPECT_EQ(data["title"], "can_on_table - 2 paths: pmd, full");
   EXPECT_EQ(data["path"]["name"], "pmd, seed 1 (a.json)");
   EXPECT_EQ(data["path"]["waypoint_states"].size(), 5u);
@@ -106,7 +101,7 @@ TEST_F(ViewPathsCli, TwoPathsOfOneTaskAreBothInTheViewerData) {
 
   // One path alone keeps the single-path document: no overlays, no names.
   ASSERT_EQ(runCli("view " + quoted(a) + " --out " + quoted(dir_.path() / "one")).exitCode, 0);
-  const auto one = viewerDocument(dir_.path() / "one");
+  const auto one = test::viewerDocument(dir_.path() / "one");
   EXPECT_FALSE(one.contains("overlay_paths"));
   EXPECT_FALSE(one["path"].contains("name"));
 }
@@ -147,7 +142,7 @@ TEST_F(ViewPathsCli, ABenchFoldersPathsOfOneSeedOpenTogetherPmdFirst) {
   writePathFile(bench / "can_on_table.pmd.seed3.path.json", straightPath(task(), 2, "pmd", 3));
   const auto result = runCli("view " + quoted(bench) + " --seed 2");
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  const auto data = viewerDocument(bench / "seed2-viewer");
+  const auto data = test::viewerDocument(bench / "seed2-viewer");
   EXPECT_EQ(data["path"]["planner"], "pmd");
   ASSERT_EQ(data["overlay_paths"].size(), 2u);
   EXPECT_EQ(data["overlay_paths"][0]["planner"], "full");
@@ -191,7 +186,7 @@ TEST(ViewPathsBench, BenchPathsAreTheRunsPathsAndOpenInTheViewer) {
   }
   const auto view = runCli(dir, "view " + quoted(paths) + " --seed 4 --out " + quoted(dir.path() / "v"));
   ASSERT_EQ(view.exitCode, 0) << view.err;
-  const auto data = viewerDocument(dir.path() / "v");
+  const auto data = test::viewerDocument(dir.path() / "v");
   EXPECT_EQ(data["path"]["planner"], "pmd");
   ASSERT_EQ(data["overlay_paths"].size(), 1u);
   EXPECT_EQ(data["overlay_paths"][0]["planner"], "ompl:RRTConnect");

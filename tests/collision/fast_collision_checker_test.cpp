@@ -12,13 +12,12 @@
 #include "collision/task_configurations.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
+#include "support/paper_tasks.hpp"
 #include "support/sanitizer_build.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {
 namespace {
-
-const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
 
 bool listed(const std::vector<std::pair<int, int>>& selfPairs,
             const std::vector<std::pair<int, std::size_t>>& obstaclePairs, const RobotModel& model, const Task& task,
@@ -42,7 +41,7 @@ CollisionPair named(const RobotModel& model, int a, int b) {
 TEST(FastCollisionChecker, EqualsTheExactCheckerOnRandomConfigurationsOfEveryTask) {
   constexpr int kPerTask = test::trials(20000, 2000);
   std::size_t total = 0, colliding = 0, provenFree = 0, provenColliding = 0, uncertain = 0, armColliding = 0;
-  for (const auto& name : kTasks) {
+  for (const auto& name : test::kPaperTasks) {
     const Task task = loadTaskByName(name);
     ExactCollisionChecker exact(task);
     ExactCollisionChecker reference(task);  // untouched by the fast checker
@@ -151,7 +150,7 @@ TEST(FastCollisionChecker, BatchesGiveTheExactCheckersAnswers) {
   std::size_t total = 0, colliding = 0;
   for (const SimdLevel level : {SimdLevel::sse2, SimdLevel::avx2, SimdLevel::avx512}) {
     if (laneWidth(level) > laneWidth(widestSimdLevel())) continue;
-    for (const auto& name : kTasks) {
+    for (const auto& name : test::kPaperTasks) {
       SCOPED_TRACE(std::string("SIMD level ") + simdLevelName(level));
       const Task task = loadTaskByName(name);
       ExactCollisionChecker exact(task), reference(task);

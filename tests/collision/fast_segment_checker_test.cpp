@@ -10,12 +10,11 @@
 
 #include "collision/task_configurations.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
+#include "support/paper_tasks.hpp"
 #include "support/sanitizer_build.hpp"
 
 namespace pmdplan {
 namespace {
-
-const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
 
 TEST(BisectionOrder, VisitsEveryInteriorIndexOnceCoarseToFine) {
   std::vector<long> order;
@@ -31,9 +30,9 @@ TEST(BisectionOrder, VisitsEveryInteriorIndexOnceCoarseToFine) {
 }
 
 TEST(FastSegmentChecker, EqualsSegmentCheckerOnRandomSegmentsOfEveryTask) {
-  constexpr int kPerTask = test::trials(2000, 100);
+  constexpr int kPerTask = test::trials(2000, 40);
   std::size_t total = 0, blocked = 0, exactStates = 0, fastStates = 0, skipped = 0;
-  for (const auto& name : kTasks) {
+  for (const auto& name : test::kPaperTasks) {
     const Task task = loadTaskByName(name);
     const auto& model = *task.robot;
     ExactCollisionChecker exact(task);

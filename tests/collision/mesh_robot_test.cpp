@@ -19,12 +19,11 @@
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/model/mesh_file.hpp"
+#include "support/paper_tasks.hpp"
 #include "support/sanitizer_build.hpp"
 
 namespace pmdplan {
 namespace {
-
-const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
 
 Task taskWithRobot(const test::TempDir& dir, const std::string& name, const std::filesystem::path& urdf) {
   return loadTask(dir.write(name + ".yaml", testing::builtInTaskText(name, urdf.string())));
@@ -123,7 +122,7 @@ TEST(MeshRobot, FastMotionChecksEqualTheExactOnes) {
   SegmentChecker slow(reference, *task.robot, 0.001);
   FastSegmentChecker sweeping(mesh.fast, *task.robot, 0.001);
   RandomSource random(31);
-  constexpr int kSegments = test::trials(400, 100);
+  constexpr int kSegments = test::trials(400, 40);
   int made = 0, blocked = 0;
   while (made < kSegments) {
     const Configuration from = testing::taskConfiguration(task, random, 1 + made % 2, 0.08);
@@ -147,7 +146,7 @@ TEST(MeshRobot, FastEqualsExactOn100000ConfigurationsOfTheFiveTasks) {
   const auto urdf = testing::writeMeshRobot(dir, robotFile(".urdf"), robotFile(".srdf"), "mesh_robot",
                                             testing::Tessellation::Circumscribed);
   std::size_t total = 0, colliding = 0, provenFree = 0, uncertain = 0;
-  for (const auto& name : kTasks) {
+  for (const auto& name : test::kPaperTasks) {
     const Task task = taskWithRobot(dir, name, urdf);
     ExactCollisionChecker exact(task), reference(task);
     FastCollisionChecker fast(task, exact);
@@ -203,12 +202,12 @@ TEST(MeshRobot, AgreesWithThePrimitivesWhereTheTessellationDecides) {
   const auto circumscribed = testing::writeMeshRobot(outer, robotFile(".urdf"), robotFile(".srdf"), "circumscribed",
                                                      testing::Tessellation::Circumscribed);
   std::size_t total = 0, primitiveColliding = 0, inscribedColliding = 0, circumscribedColliding = 0;
-  for (const auto& name : kTasks) {
+  for (const auto& name : test::kPaperTasks) {
     const Task primitives = loadTaskByName(name);
     const Task inner = taskWithRobot(dir, name, inscribed), outerTask = taskWithRobot(outer, name, circumscribed);
     ExactCollisionChecker primitive(primitives), inside(inner), around(outerTask);
     RandomSource random(99);
-    for (int s = 0; s < 4000; ++s) {
+    for (int s = 0; s < test::trials(4000, 400); ++s) {
       const Configuration q = testing::taskConfiguration(primitives, random, s % 3);
       const bool primitiveFree = primitive.isValid(q), insideFree = inside.isValid(q), aroundFree = around.isValid(q);
       if (primitiveFree)

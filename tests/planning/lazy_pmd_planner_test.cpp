@@ -37,16 +37,9 @@ struct LazyToyRun {
   }
 };
 
-PlannerParameters withSeed(std::uint64_t seed) {
-  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
-  parameters.seed = seed;
-  parameters.timeLimit = 60.0;
-  return parameters;
-}
-
 TEST(LazyPmdPlanner, SolvesTheNarrowPassageWithValidPaths) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    LazyToyRun run(withSeed(seed));
+    LazyToyRun run(toy::withSeed(seed));
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
     const std::vector<Configuration>& path = run.planner.path();
     ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
@@ -74,7 +67,7 @@ TEST(LazyPmdPlanner, SolvesTheNarrowPassageWithValidPaths) {
 
 // Lazy: far fewer motion checks than edges (only candidate paths' edges are checked).
 TEST(LazyPmdPlanner, ChecksOnlyTheEdgesOfCandidatePaths) {
-  LazyToyRun run(withSeed(3));
+  LazyToyRun run(toy::withSeed(3));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   std::size_t checked = 0;
   std::size_t free = 0;
@@ -90,7 +83,7 @@ TEST(LazyPmdPlanner, ChecksOnlyTheEdgesOfCandidatePaths) {
 }
 
 TEST(LazyPmdPlanner, AFreeStraightSegmentIsOneMotionCheckAndNoSample) {
-  LazyToyRun run(withSeed(1), toy::Wall{}, toy::start(), toy::fromUnit({0.3, 0.5, 0.3, 0.9, 0.7, 0.5}));
+  LazyToyRun run(toy::withSeed(1), toy::Wall{}, toy::start(), toy::fromUnit({0.3, 0.5, 0.3, 0.9, 0.7, 0.5}));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(run.planner.path().size(), 2u);
   EXPECT_EQ(run.planner.statistics().samples, 0u);
@@ -98,8 +91,8 @@ TEST(LazyPmdPlanner, AFreeStraightSegmentIsOneMotionCheckAndNoSample) {
 }
 
 TEST(LazyPmdPlanner, TheSameSeedGivesTheSamePath) {
-  LazyToyRun first(withSeed(17));
-  LazyToyRun second(withSeed(17));
+  LazyToyRun first(toy::withSeed(17));
+  LazyToyRun second(toy::withSeed(17));
   ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
   ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(first.planner.path(), second.planner.path());
@@ -112,7 +105,7 @@ TEST(LazyPmdPlanner, TheSameSeedGivesTheSamePath) {
 
   std::set<std::vector<double>> distinct;
   for (std::uint64_t seed = 20; seed < 25; ++seed) {
-    LazyToyRun other(withSeed(seed));
+    LazyToyRun other(toy::withSeed(seed));
     ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
     const Configuration& middle = other.planner.unsmoothedPath()[1];
     distinct.insert(std::vector<double>(middle.data(), middle.data() + middle.size()));
@@ -121,7 +114,7 @@ TEST(LazyPmdPlanner, TheSameSeedGivesTheSamePath) {
 }
 
 TEST(LazyPmdPlanner, AClosedWallStopsAtTheSampleLimit) {
-  PlannerParameters parameters = withSeed(2);
+  PlannerParameters parameters = toy::withSeed(2);
   parameters.maxSamples = 500;
   LazyToyRun run(parameters, toy::Wall{false});
   EXPECT_EQ(run.planner.solve(), PlannerStatus::SampleLimit);
@@ -132,15 +125,15 @@ TEST(LazyPmdPlanner, AClosedWallStopsAtTheSampleLimit) {
 
 TEST(LazyPmdPlanner, ACollidingStartOrGoalIsReported) {
   const Configuration inWall = toy::fromUnit({0.5, 0.9, 0.3, 0.9, 0.9, 0.5});
-  LazyToyRun badStart(withSeed(1), toy::Wall{}, inWall, toy::goal());
+  LazyToyRun badStart(toy::withSeed(1), toy::Wall{}, inWall, toy::goal());
   EXPECT_EQ(badStart.planner.solve(), PlannerStatus::InvalidStart);
-  LazyToyRun badGoal(withSeed(1), toy::Wall{}, toy::start(), inWall);
+  LazyToyRun badGoal(toy::withSeed(1), toy::Wall{}, toy::start(), inWall);
   EXPECT_EQ(badGoal.planner.solve(), PlannerStatus::InvalidGoal);
 }
 
 TEST(LazyPmdPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
   const auto expectRejected = [](const std::string& flag, auto change) {
-    PlannerParameters parameters = withSeed(1);
+    PlannerParameters parameters = toy::withSeed(1);
     change(parameters.lazy);
     LazyToyRun run(parameters);
     try {
@@ -161,7 +154,7 @@ TEST(LazyPmdPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
 }
 
 TEST(LazyPmdPlanner, WithoutProbesItStillSolves) {
-  PlannerParameters parameters = withSeed(4);
+  PlannerParameters parameters = toy::withSeed(4);
   parameters.lazy.probes = 0;
   LazyToyRun run(parameters);
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);

@@ -32,16 +32,9 @@ struct ConnectToyRun {
   }
 };
 
-PlannerParameters withSeed(std::uint64_t seed) {
-  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
-  parameters.seed = seed;
-  parameters.timeLimit = 60.0;
-  return parameters;
-}
-
 TEST(PmdConnectPlanner, SolvesTheNarrowPassageWithValidPaths) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    ConnectToyRun run(withSeed(seed));
+    ConnectToyRun run(toy::withSeed(seed));
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
     const std::vector<Configuration>& path = run.planner.path();
     ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
@@ -68,7 +61,7 @@ TEST(PmdConnectPlanner, SolvesTheNarrowPassageWithValidPaths) {
 // Lazy: the motion checks settle only segments of candidate paths; every segment of the path the
 // trees returned was certified.
 TEST(PmdConnectPlanner, MotionChecksOnlyCandidatePaths) {
-  ConnectToyRun run(withSeed(3));
+  ConnectToyRun run(toy::withSeed(3));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   std::size_t checked = 0;
   std::size_t segments = 0;
@@ -86,7 +79,7 @@ TEST(PmdConnectPlanner, MotionChecksOnlyCandidatePaths) {
 }
 
 TEST(PmdConnectPlanner, AFreeStraightSegmentIsOneMotionCheckAndNoSample) {
-  ConnectToyRun run(withSeed(1), toy::Wall{}, toy::start(), toy::fromUnit({0.3, 0.5, 0.3, 0.9, 0.7, 0.5}));
+  ConnectToyRun run(toy::withSeed(1), toy::Wall{}, toy::start(), toy::fromUnit({0.3, 0.5, 0.3, 0.9, 0.7, 0.5}));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(run.planner.path().size(), 2u);
   EXPECT_EQ(run.planner.statistics().samples, 0u);
@@ -94,8 +87,8 @@ TEST(PmdConnectPlanner, AFreeStraightSegmentIsOneMotionCheckAndNoSample) {
 }
 
 TEST(PmdConnectPlanner, TheSameSeedGivesTheSamePath) {
-  ConnectToyRun first(withSeed(17));
-  ConnectToyRun second(withSeed(17));
+  ConnectToyRun first(toy::withSeed(17));
+  ConnectToyRun second(toy::withSeed(17));
   ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
   ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(first.planner.path(), second.planner.path());
@@ -108,7 +101,7 @@ TEST(PmdConnectPlanner, TheSameSeedGivesTheSamePath) {
 
   std::set<std::vector<double>> distinct;
   for (std::uint64_t seed = 20; seed < 25; ++seed) {
-    ConnectToyRun other(withSeed(seed));
+    ConnectToyRun other(toy::withSeed(seed));
     ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
     const Configuration& middle = other.planner.unsmoothedPath()[1];
     distinct.insert(std::vector<double>(middle.data(), middle.data() + middle.size()));
@@ -117,7 +110,7 @@ TEST(PmdConnectPlanner, TheSameSeedGivesTheSamePath) {
 }
 
 TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
-  PlannerParameters parameters = withSeed(2);
+  PlannerParameters parameters = toy::withSeed(2);
   parameters.maxSamples = 500;
   ConnectToyRun closed(parameters, toy::Wall{false});
   EXPECT_EQ(closed.planner.solve(), PlannerStatus::SampleLimit);
@@ -126,7 +119,7 @@ TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
   EXPECT_EQ(closed.planner.statistics().finalArmHalfSize, 1.0) << "grown to the whole arm box";
 
   // Without growth every sample's box is rho_a: the passage is still found (it lies on the segment).
-  parameters = withSeed(2);
+  parameters = toy::withSeed(2);
   parameters.connect.armGrowth = 1.0;
   ConnectToyRun fixed(parameters);
   ASSERT_EQ(fixed.planner.solve(), PlannerStatus::Solved);
@@ -139,9 +132,9 @@ TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
 
 TEST(PmdConnectPlanner, ACollidingStartOrGoalIsReported) {
   const Configuration inWall = toy::fromUnit({0.5, 0.9, 0.3, 0.9, 0.9, 0.5});
-  ConnectToyRun badStart(withSeed(1), toy::Wall{}, inWall, toy::goal());
+  ConnectToyRun badStart(toy::withSeed(1), toy::Wall{}, inWall, toy::goal());
   EXPECT_EQ(badStart.planner.solve(), PlannerStatus::InvalidStart);
-  ConnectToyRun badGoal(withSeed(1), toy::Wall{}, toy::start(), inWall);
+  ConnectToyRun badGoal(toy::withSeed(1), toy::Wall{}, toy::start(), inWall);
   EXPECT_EQ(badGoal.planner.solve(), PlannerStatus::InvalidGoal);
 }
 
@@ -152,7 +145,7 @@ TEST(PmdConnectPlanner, ShortStepsProbesOffAndEverySequenceStillSolve) {
            [](PlannerParameters& p) { p.connect.probes = 0; },
            [](PlannerParameters& p) { p.sequence = SampleSequence::Halton; },
            [](PlannerParameters& p) { p.sequence = SampleSequence::Sdk; }}) {
-    PlannerParameters parameters = withSeed(5);
+    PlannerParameters parameters = toy::withSeed(5);
     change(parameters);
     ConnectToyRun run(parameters);
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
@@ -163,7 +156,7 @@ TEST(PmdConnectPlanner, ShortStepsProbesOffAndEverySequenceStillSolve) {
 
 TEST(PmdConnectPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
   const auto expectRejected = [](const std::string& flag, auto change) {
-    PlannerParameters parameters = withSeed(1);
+    PlannerParameters parameters = toy::withSeed(1);
     change(parameters.connect);
     ConnectToyRun run(parameters);
     try {

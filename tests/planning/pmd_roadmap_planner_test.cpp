@@ -54,16 +54,9 @@ struct ToyRun {
   }
 };
 
-PlannerParameters withSeed(std::uint64_t seed, HandSamplingMode mode = HandSamplingMode::Synergy) {
-  PlannerParameters parameters = PlannerParameters::defaultsFor(mode);
-  parameters.seed = seed;
-  parameters.timeLimit = 60.0;
-  return parameters;
-}
-
 TEST(PmdRoadmapPlanner, SolvesTheNarrowPassage) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-    ToyRun run(withSeed(seed));
+    ToyRun run(toy::withSeed(seed));
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
     const std::vector<Configuration>& path = run.planner.path();
     ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
@@ -100,8 +93,8 @@ TEST(PmdRoadmapPlanner, SolvesTheNarrowPassage) {
 }
 
 TEST(PmdRoadmapPlanner, TheSameSeedGivesTheSamePath) {
-  ToyRun first(withSeed(17));
-  ToyRun second(withSeed(17));
+  ToyRun first(toy::withSeed(17));
+  ToyRun second(toy::withSeed(17));
   ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
   ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(first.planner.path(), second.planner.path());
@@ -120,14 +113,14 @@ TEST(PmdRoadmapPlanner, TheSameSeedGivesTheSamePath) {
   ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(first.planner.path(), second.planner.path());
 
-  ToyRun other(withSeed(18));
+  ToyRun other(toy::withSeed(18));
   ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
   EXPECT_NE(other.planner.unsmoothedPath(), first.planner.unsmoothedPath());
 }
 
 TEST(PmdRoadmapPlanner, AProgressCallbackOnlyObserves) {
-  ToyRun quiet(withSeed(5));
-  ToyRun watched(withSeed(5));
+  ToyRun quiet(toy::withSeed(5));
+  ToyRun watched(toy::withSeed(5));
   std::size_t calls = 0;
   std::size_t lastNodes = 0;
   watched.planner.setProgressCallback([&](const PlannerProgress& progress) {
@@ -146,7 +139,7 @@ TEST(PmdRoadmapPlanner, AProgressCallbackOnlyObserves) {
 
 TEST(PmdRoadmapPlanner, TheFullSpaceSwitchSolvesWithWholeHandSamples) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    ToyRun run(withSeed(seed, HandSamplingMode::FullSpace), HandSamplingMode::FullSpace);
+    ToyRun run(toy::withSeed(seed, HandSamplingMode::FullSpace), HandSamplingMode::FullSpace);
     EXPECT_EQ(run.planner.handSampler().name(), "full");
     EXPECT_EQ(run.planner.parameters().armTrials, 20);
     EXPECT_EQ(run.planner.parameters().handTrials, 20);
@@ -178,7 +171,7 @@ TEST(PmdRoadmapPlanner, HandDimensionGrowsFromTwoToTheMaximum) {
   toy::WallMotionValidator motionValidator;
   const SynergyModel model = toy::synergyModel();
   std::vector<int> recorded;
-  PlannerParameters parameters = withSeed(1);
+  PlannerParameters parameters = toy::withSeed(1);
   parameters.maxSamples = 30;  // N bounds the samples (hand-arm draws): n_H = 10 for each of 3 arms
   PmdRoadmapPlanner planner(
       toy::space(), stateValidator, motionValidator,
@@ -196,7 +189,7 @@ TEST(PmdRoadmapPlanner, HandDimensionGrowsFromTwoToTheMaximum) {
 }
 
 TEST(PmdRoadmapPlanner, NodesRecordTheDimensionThatMadeThem) {
-  ToyRun run(withSeed(4));
+  ToyRun run(toy::withSeed(4));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   std::map<int, std::size_t> counted;
   for (NodeIndex i = 2; i < run.planner.roadmap().nodeCount(); ++i)
@@ -207,7 +200,7 @@ TEST(PmdRoadmapPlanner, NodesRecordTheDimensionThatMadeThem) {
 }
 
 TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheSampleLimit) {
-  PlannerParameters parameters = withSeed(3);
+  PlannerParameters parameters = toy::withSeed(3);
   parameters.maxSamples = 50'000;
   ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
   EXPECT_EQ(run.planner.solve(), PlannerStatus::SampleLimit);
@@ -235,7 +228,7 @@ class FixedAnswers : public StateValidator {
 // k·rho_a(1) with the linear reading; every sweep starts from the whole segment.
 TEST(PmdRoadmapPlanner, ArmBoxesGrowSweepBySweep) {
   for (const ArmBoxGrowth growth : {ArmBoxGrowth::Factorial, ArmBoxGrowth::Linear}) {
-    PlannerParameters parameters = withSeed(3);
+    PlannerParameters parameters = toy::withSeed(3);
     parameters.armBoxGrowth = growth;
     parameters.maxSamples = 40000;
     FixedAnswers stateValidator(true, false);  // start and goal free, every arm draw in self-collision
@@ -289,7 +282,7 @@ class GoalUnreachable : public MotionValidator {
 // rather than growing rho_a after one or two.
 TEST(PmdRoadmapPlanner, ANarrowSearchRangeIsPassedOverAgainBeforeRhoGrows) {
   for (const std::size_t minimum : {std::size_t{1}, std::size_t{10}}) {
-    PlannerParameters parameters = withSeed(5);
+    PlannerParameters parameters = toy::withSeed(5);
     parameters.minSweepVisits = minimum;
     parameters.maxSamples = 400;
     FixedAnswers stateValidator(true, true);
@@ -312,7 +305,7 @@ TEST(PmdRoadmapPlanner, ANarrowSearchRangeIsPassedOverAgainBeforeRhoGrows) {
 }
 
 TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheTimeLimit) {
-  PlannerParameters parameters = withSeed(3);
+  PlannerParameters parameters = toy::withSeed(3);
   parameters.maxSamples = std::numeric_limits<std::size_t>::max();
   parameters.timeLimit = 0.2;
   ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
@@ -324,7 +317,7 @@ TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheTimeLimit) {
 }
 
 TEST(PmdRoadmapPlanner, StartOrGoalInCollisionIsReported) {
-  ToyRun run(withSeed(1));
+  ToyRun run(toy::withSeed(1));
   run.planner.setStartAndGoal(toy::fromUnit({0.5, 0.9, 0.3, 0.8, 0.8, 0.5}), toy::goal());
   EXPECT_EQ(run.planner.solve(), PlannerStatus::InvalidStart);
   run.planner.setStartAndGoal(toy::start(), toy::fromUnit({0.5, 0.9, 0.3, 0.8, 0.8, 0.5}));
@@ -333,14 +326,14 @@ TEST(PmdRoadmapPlanner, StartOrGoalInCollisionIsReported) {
 }
 
 TEST(PmdRoadmapPlanner, StartEqualToGoalIsATwoPointPath) {
-  ToyRun run(withSeed(1));
+  ToyRun run(toy::withSeed(1));
   run.planner.setStartAndGoal(toy::start(), toy::start());
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(run.planner.path(), (std::vector<Configuration>{toy::start(), toy::start()}));
 }
 
 TEST(PmdRoadmapPlanner, SetupRejectsMalformedProblems) {
-  ToyRun run(withSeed(1));
+  ToyRun run(toy::withSeed(1));
   run.planner.setStartAndGoal(Eigen::VectorXd::Zero(3), toy::goal());
   EXPECT_THROW(run.planner.setup(), std::invalid_argument);
   Configuration outside = toy::start();
@@ -353,7 +346,7 @@ TEST(PmdRoadmapPlanner, SetupRejectsMalformedProblems) {
 // except the edges to a forced neighbour.
 TEST(PmdRoadmapPlanner, EdgesRespectTheNeighbourThreshold) {
   for (const double factor : {0.5, 1.0, 3.0}) {
-    PlannerParameters parameters = withSeed(6);
+    PlannerParameters parameters = toy::withSeed(6);
     parameters.neighbourThresholdFactor = factor;
     ToyRun run(parameters);
     run.planner.solve();
@@ -370,7 +363,7 @@ TEST(PmdRoadmapPlanner, EdgesRespectTheNeighbourThreshold) {
 }
 
 TEST(PmdRoadmapPlanner, ClearDropsTheRun) {
-  ToyRun run(withSeed(2));
+  ToyRun run(toy::withSeed(2));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   run.planner.clear();
   EXPECT_TRUE(run.planner.path().empty());

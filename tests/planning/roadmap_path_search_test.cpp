@@ -7,13 +7,12 @@
 #include <vector>
 
 #include "pmdplan/core/random_source.hpp"
+#include "support/planar_roadmap.hpp"
 
 namespace pmdplan {
 namespace {
 
-NodeIndex addAt(Roadmap& roadmap, double x, double y) {
-  return roadmap.addNode({Eigen::Vector2d(x, y), Eigen::Vector2d(x, y), 0.5, 2});
-}
+using test::addAt;
 
 double lengthOf(const Roadmap& roadmap, const std::vector<NodeIndex>& path) {
   double total = 0.0;

@@ -6,12 +6,12 @@
 #include <utility>
 #include <vector>
 
+#include "support/planar_roadmap.hpp"
+
 namespace pmdplan {
 namespace {
 
-NodeIndex addAt(Roadmap& roadmap, double x, double y) {
-  return roadmap.addNode({Eigen::Vector2d(x, y), Eigen::Vector2d(x, y), 0.5, 2});
-}
+using test::addAt;
 
 /// Records every segment asked about; free unless it crosses the line x = `wallX`.
 class RecordingMotionValidator : public MotionValidator {

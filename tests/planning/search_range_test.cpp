@@ -5,14 +5,14 @@
 namespace pmdplan {
 namespace {
 
-NodeIndex addAt(Roadmap& roadmap, double x, double step) {
+NodeIndex addOnTheLine(Roadmap& roadmap, double x, double step) {
   return roadmap.addNode({Eigen::Vector2d(x, 0.0), Eigen::Vector2d(x, 0.0), step, step == 0.0 || step == 1.0 ? 0 : 2});
 }
 
 TEST(SearchRange, StartsAsTheWholeSegment) {
   Roadmap roadmap;
-  const NodeIndex start = addAt(roadmap, 0.0, 0.0);
-  const NodeIndex goal = addAt(roadmap, 1.0, 1.0);
+  const NodeIndex start = addOnTheLine(roadmap, 0.0, 0.0);
+  const NodeIndex goal = addOnTheLine(roadmap, 1.0, 1.0);
   const SearchRange range = updateSearchRange(roadmap, start, goal);
   EXPECT_EQ(range.low, 0.0);
   EXPECT_EQ(range.high, 1.0);
@@ -25,12 +25,12 @@ TEST(SearchRange, StartsAsTheWholeSegment) {
 // B^a(c_ini^a) join c_ini. Two components, range [0.5, 1.0].
 TEST(SearchRange, ReproducesFigure13) {
   Roadmap roadmap;
-  const NodeIndex start = addAt(roadmap, 0.0, 0.0);
-  const NodeIndex goal = addAt(roadmap, 1.0, 1.0);
-  const NodeIndex s1 = addAt(roadmap, 0.98, 1.0);
+  const NodeIndex start = addOnTheLine(roadmap, 0.0, 0.0);
+  const NodeIndex goal = addOnTheLine(roadmap, 1.0, 1.0);
+  const NodeIndex s1 = addOnTheLine(roadmap, 0.98, 1.0);
   roadmap.addEdge(s1, goal);
-  const NodeIndex s2 = addAt(roadmap, 0.5, 0.5);
-  const NodeIndex s3 = addAt(roadmap, 0.03, 0.0);
+  const NodeIndex s2 = addOnTheLine(roadmap, 0.5, 0.5);
+  const NodeIndex s3 = addOnTheLine(roadmap, 0.03, 0.0);
   roadmap.addEdge(s3, start);
   roadmap.addEdge(s2, s3);
   ASSERT_EQ(roadmap.componentCount(), 2u);
@@ -44,12 +44,12 @@ TEST(SearchRange, ReproducesFigure13) {
 
 TEST(SearchRange, IgnoresIsolatedSamplesAndNarrowsFromBothSides) {
   Roadmap roadmap;
-  const NodeIndex start = addAt(roadmap, 0.0, 0.0);
-  const NodeIndex goal = addAt(roadmap, 1.0, 1.0);
-  addAt(roadmap, 0.6, 0.625);  // joined to neither: no influence
-  const NodeIndex nearGoal = addAt(roadmap, 0.75, 0.75);
+  const NodeIndex start = addOnTheLine(roadmap, 0.0, 0.0);
+  const NodeIndex goal = addOnTheLine(roadmap, 1.0, 1.0);
+  addOnTheLine(roadmap, 0.6, 0.625);  // joined to neither: no influence
+  const NodeIndex nearGoal = addOnTheLine(roadmap, 0.75, 0.75);
   roadmap.addEdge(nearGoal, goal);
-  const NodeIndex nearStart = addAt(roadmap, 0.25, 0.25);
+  const NodeIndex nearStart = addOnTheLine(roadmap, 0.25, 0.25);
   roadmap.addEdge(nearStart, start);
   const SearchRange range = updateSearchRange(roadmap, start, goal);
   EXPECT_EQ(range.low, 0.25);
@@ -58,11 +58,11 @@ TEST(SearchRange, IgnoresIsolatedSamplesAndNarrowsFromBothSides) {
 
 TEST(SearchRange, ComponentsReachingPastEachOtherGiveTheOverlap) {
   Roadmap roadmap;
-  const NodeIndex start = addAt(roadmap, 0.0, 0.0);
-  const NodeIndex goal = addAt(roadmap, 1.0, 1.0);
-  const NodeIndex farFromStart = addAt(roadmap, 0.7, 0.75);
+  const NodeIndex start = addOnTheLine(roadmap, 0.0, 0.0);
+  const NodeIndex goal = addOnTheLine(roadmap, 1.0, 1.0);
+  const NodeIndex farFromStart = addOnTheLine(roadmap, 0.7, 0.75);
   roadmap.addEdge(farFromStart, start);
-  const NodeIndex farFromGoal = addAt(roadmap, 0.3, 0.25);
+  const NodeIndex farFromGoal = addOnTheLine(roadmap, 0.3, 0.25);
   roadmap.addEdge(farFromGoal, goal);
   const SearchRange range = updateSearchRange(roadmap, start, goal);
   EXPECT_EQ(range.low, 0.25);

@@ -11,11 +11,13 @@
 // the points where it enters and leaves the slab are: the motion check is exact, not sampled.
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"
+#include "pmdplan/planning/planner_parameters.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
 
@@ -53,6 +55,14 @@ inline Configuration fromUnit(std::initializer_list<double> unit) {
   Eigen::Index i = 0;
   for (const double v : unit) u[i++] = v;
   return space().denormalise(u);
+}
+
+/// The planner's defaults for `mode` with `seed` and a 60 s limit that a test's run never reaches.
+inline PlannerParameters withSeed(std::uint64_t seed, HandSamplingMode mode = HandSamplingMode::Synergy) {
+  PlannerParameters parameters = PlannerParameters::defaultsFor(mode);
+  parameters.seed = seed;
+  parameters.timeLimit = 60.0;
+  return parameters;
 }
 
 inline Configuration start() { return fromUnit({0.1, 0.5, 0.3, 0.8, 0.8, 0.5}); }

@@ -8,7 +8,7 @@
 namespace pmdplan {
 namespace {
 
-JointLimits hand() { return {{"spread", -0.5, 0.5}, {"f1", 0.0, 2.0}, {"f2", 0.0, 2.0}, {"f3", 0.0, 1.0}}; }
+JointLimits graspitHand() { return {{"spread", -0.5, 0.5}, {"f1", 0.0, 2.0}, {"f2", 0.0, 2.0}, {"f3", 0.0, 1.0}}; }
 
 // A small file in GraspIt's format: 3 dimensions (f1, f2, spread), two eigengrasps.
 const char* kOrthogonalFile = R"(<?xml version="1.0" ?>
@@ -31,7 +31,7 @@ const char* kOrthogonalFile = R"(<?xml version="1.0" ?>
 TEST(GraspItImport, MeanAndDirectionsInNormalisedJointUnits) {
   test::TempDir dir;
   const auto path = dir.write("eigen.xml", kOrthogonalFile);
-  const GraspItImport imported = importGraspItEigengrasps(path, {"f1", "f2", "spread"}, hand());
+  const GraspItImport imported = importGraspItEigengrasps(path, {"f1", "f2", "spread"}, graspitHand());
   const SynergyModel& model = imported.model;
   ASSERT_EQ(model.jointCount(), 4);
   ASSERT_EQ(model.directionCount(), 2);
@@ -59,7 +59,7 @@ TEST(GraspItImport, ScalingByJointRangesCanMakeABasisNonOrthogonal) {
   <EG><EigenValue value="0.1"/><DimVals d0="1" d1="-1"/></EG>
   <ORIGIN><DimVals d0="1" d1="0.5"/></ORIGIN>
 </EigenGrasps>)";
-  const GraspItImport imported = parseGraspItEigengrasps(xml, "g.xml", {"f1", "f3"}, hand());
+  const GraspItImport imported = parseGraspItEigengrasps(xml, "g.xml", {"f1", "f3"}, graspitHand());
   EXPECT_FALSE(imported.model.orthonormal);
   bool said = false;
   for (const auto& note : imported.notes) said = said || note.find("least squares") != std::string::npos;
@@ -72,12 +72,13 @@ TEST(GraspItImport, ReordersByEigenvalueAndSaysSo) {
   <EG><EigenValue value="0.1"/><DimVals d0="1"/></EG>
   <EG><EigenValue value="0.3"/><DimVals d0="-1"/></EG>
 </EigenGrasps>)";
-  EXPECT_THROW(parseGraspItEigengrasps(xml, "g.xml", {"f1"}, hand()), InputError);  // two parallel vectors: dependent
+  EXPECT_THROW(parseGraspItEigengrasps(xml, "g.xml", {"f1"}, graspitHand()),
+               InputError);  // two parallel vectors: dependent
   const std::string two = R"(<EigenGrasps dimensions="2">
   <EG><EigenValue value="0.1"/><DimVals d0="1"/></EG>
   <EG><EigenValue value="0.3"/><DimVals d1="1"/></EG>
 </EigenGrasps>)";
-  const GraspItImport imported = parseGraspItEigengrasps(two, "g.xml", {"f1", "f2"}, hand());
+  const GraspItImport imported = parseGraspItEigengrasps(two, "g.xml", {"f1", "f2"}, graspitHand());
   EXPECT_GT(imported.model.sigma(0), imported.model.sigma(1));
   EXPECT_DOUBLE_EQ(imported.model.directions(2, 0), 1.0);
   EXPECT_DOUBLE_EQ(imported.model.mean(1), 0.5);  // no ORIGIN: mid-range, as GraspIt does
@@ -87,31 +88,31 @@ TEST(GraspItImport, BadInputNamesFileAndLine) {
   test::expectInputError(
       [] {
         parseGraspItEigengrasps("<EigenGrasps dimensions=\"3\">\n<EG>\n</EigenGrasps>", "g.xml", {"f1", "f2", "f3"},
-                                hand());
+                                graspitHand());
       },
       "g.xml", "line 2", "XML error");
   test::expectInputError(
       [] {
-        parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2"}, hand());
+        parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2"}, graspitHand());
       },
       "g.xml", "line 2 (dimensions)", "3 dimensions but 2 joints");
   test::expectInputError(
       [] {
-        parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2", "wrist"}, hand());
+        parseGraspItEigengrasps(kOrthogonalFile, "g.xml", {"f1", "f2", "wrist"}, graspitHand());
       },
       "", "joints", "'wrist' (dimension 2) is not one of the hand joints");
   std::string beyond = kOrthogonalFile;
   beyond.replace(beyond.find("d1=\"1.5\""), 8, "d1=\"2.5\"");
   test::expectInputError(
       [&] {
-        parseGraspItEigengrasps(beyond, "g.xml", {"f1", "f2", "spread"}, hand());
+        parseGraspItEigengrasps(beyond, "g.xml", {"f1", "f2", "spread"}, graspitHand());
       },
       "g.xml", "line 13 (ORIGIN.d1)", "beyond the limits");
   std::string notNumber = kOrthogonalFile;
   notNumber.replace(notNumber.find("d2=\"2\""), 6, "d2=\"x\"");
   test::expectInputError(
       [&] {
-        parseGraspItEigengrasps(notNumber, "g.xml", {"f1", "f2", "spread"}, hand());
+        parseGraspItEigengrasps(notNumber, "g.xml", {"f1", "f2", "spread"}, graspitHand());
       },
       "g.xml", "line 9 (eigengrasp 2.d2)", "not a number");
 }

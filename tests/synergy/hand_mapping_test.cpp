@@ -10,7 +10,9 @@
 namespace pmdplan {
 namespace {
 
-JointLimits hand() { return {{"roll", 0.0, 1.5}, {"tilt", -0.25, 0.25}, {"bend", 0.0, 1.0}, {"spare", -0.2, 0.2}}; }
+JointLimits mappedHand() {
+  return {{"roll", 0.0, 1.5}, {"tilt", -0.25, 0.25}, {"bend", 0.0, 1.0}, {"spare", -0.2, 0.2}};
+}
 
 HandMapping mapping() {
   HandMapping m;
@@ -36,7 +38,7 @@ Eigen::MatrixXd angles(std::initializer_list<std::array<double, 3>> rows) {
 }
 
 TEST(HandMapping, LinearFunctionsOfSensorsAndConstants) {
-  const MappedPostures mapped = mapToJoints(angles({{0.75, 0.2, 0.4}}), mapping(), hand());
+  const MappedPostures mapped = mapToJoints(angles({{0.75, 0.2, 0.4}}), mapping(), mappedHand());
   EXPECT_DOUBLE_EQ(mapped.postures(0, 0), 0.75);
   EXPECT_DOUBLE_EQ(mapped.postures(0, 1), 0.25 - 0.25);
   EXPECT_DOUBLE_EQ(mapped.postures(0, 2), 0.3);
@@ -46,7 +48,7 @@ TEST(HandMapping, LinearFunctionsOfSensorsAndConstants) {
 
 TEST(HandMapping, ValuesBeyondALimitAreClampedAndCounted) {
   // Roll 1.8 > 1.5 (roll clamped, and tilt = 0.25 - 0.6 < -0.25 clamped); bend -0.1 < 0 clamped.
-  const MappedPostures mapped = mapToJoints(angles({{1.8, -0.1, -0.1}, {0.3, 0.5, 0.5}}), mapping(), hand());
+  const MappedPostures mapped = mapToJoints(angles({{1.8, -0.1, -0.1}, {0.3, 0.5, 0.5}}), mapping(), mappedHand());
   EXPECT_DOUBLE_EQ(mapped.postures(0, 0), 1.5);
   EXPECT_DOUBLE_EQ(mapped.postures(0, 1), -0.25);
   EXPECT_DOUBLE_EQ(mapped.postures(0, 2), 0.0);
@@ -56,7 +58,7 @@ TEST(HandMapping, ValuesBeyondALimitAreClampedAndCounted) {
 }
 
 TEST(HandMapping, RulesFollowTheRobotsJointOrder) {
-  JointLimits reversed = hand();
+  JointLimits reversed = mappedHand();
   std::reverse(reversed.begin(), reversed.end());
   const HandMapping m = mapping();
   const auto rules = rulesForJoints(m, reversed);
@@ -67,23 +69,25 @@ TEST(HandMapping, RulesFollowTheRobotsJointOrder) {
 TEST(HandMapping, UnknownJointNamesTheMappingLine) {
   HandMapping m = mapping();
   m.rules[2].joint = "bent";
-  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "line 5 (joint bent)", "unknown joint 'bent'");
+  test::expectInputError([&] { rulesForJoints(m, mappedHand()); }, "map.yaml", "line 5 (joint bent)",
+                         "unknown joint 'bent'");
 }
 
 TEST(HandMapping, EveryRobotJointNeedsExactlyOneRule) {
   HandMapping m = mapping();
   m.rules.pop_back();
-  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "joints",
+  test::expectInputError([&] { rulesForJoints(m, mappedHand()); }, "map.yaml", "joints",
                          "no rule for the robot's hand joint spare");
   m = mapping();
   m.rules.push_back({"roll", {}, 0.1, 9});
-  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "line 9", "a second rule for joint roll");
+  test::expectInputError([&] { rulesForJoints(m, mappedHand()); }, "map.yaml", "line 9",
+                         "a second rule for joint roll");
 }
 
 TEST(HandMapping, ConstantOutsideTheLimitsIsAnError) {
   HandMapping m = mapping();
   m.rules[3].offset = 0.5;
-  test::expectInputError([&] { rulesForJoints(m, hand()); }, "map.yaml", "line 6 (joint spare)",
+  test::expectInputError([&] { rulesForJoints(m, mappedHand()); }, "map.yaml", "line 6 (joint spare)",
                          "outside the joint's limits");
 }
 

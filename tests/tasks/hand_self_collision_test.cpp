@@ -7,11 +7,10 @@
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/core/random_source.hpp"
 #include "pmdplan/world/task.hpp"
+#include "support/paper_tasks.hpp"
 
 namespace pmdplan {
 namespace {
-
-const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
 
 /// The robot alone in free space, so only self-collision can be reported.
 Task robotAlone() {
@@ -66,7 +65,7 @@ TEST(HandSelfCollision, EveryPublishedStartAndGoalHandIsFree) {
   const Task alone = robotAlone();
   ExactCollisionChecker checker(alone);
   const auto& model = *alone.robot;
-  for (const auto& name : kTasks) {
+  for (const auto& name : test::kPaperTasks) {
     const Task task = loadTaskByName(name);
     for (const auto* q : {&task.start, &task.goal}) {
       Configuration posture = withHand(model, {});

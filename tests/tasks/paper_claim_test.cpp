@@ -16,7 +16,7 @@
 namespace pmdplan {
 namespace {
 
-constexpr int kSeeds = 20;
+constexpr int kClaimSeeds = 20;
 constexpr double kFactor = 5.0;
 
 struct Totals {
@@ -40,7 +40,7 @@ TEST(PaperClaim, TheFullSpaceNeedsFiveTimesTheSamplesAndNodesOfPmdOnTask0) {
   };
 
   Totals pmd;
-  for (int seed = 1; seed <= kSeeds; ++seed) {
+  for (int seed = 1; seed <= kClaimSeeds; ++seed) {
     const PlanningStatistics s = plan(HandSamplingMode::Synergy, seed, 1'000'000);
     ASSERT_TRUE(s.solved()) << "pmd, seed " << seed << ": " << plannerStatusName(s.status);
     pmd.samples += s.samples;
@@ -54,16 +54,16 @@ TEST(PaperClaim, TheFullSpaceNeedsFiveTimesTheSamplesAndNodesOfPmdOnTask0) {
                       static_cast<std::size_t>(kFactor * static_cast<double>(pmd.nodes))};
   Totals full;
   int seedsRun = 0;
-  for (int seed = 1; seed <= kSeeds && (full.samples < needed.samples || full.nodes < needed.nodes); ++seed) {
+  for (int seed = 1; seed <= kClaimSeeds && (full.samples < needed.samples || full.nodes < needed.nodes); ++seed) {
     const PlanningStatistics s = plan(HandSamplingMode::FullSpace, seed, needed.samples);
     full.samples += s.samples;
     full.nodes += s.roadmapNodes;
     ++seedsRun;
   }
-  EXPECT_GE(full.samples, needed.samples) << "pmd drew " << pmd.samples << " samples over " << kSeeds << " seeds";
-  EXPECT_GE(full.nodes, needed.nodes) << "pmd built " << pmd.nodes << " nodes over " << kSeeds << " seeds";
-  std::printf("pmd over %d seeds: %zu samples, %zu nodes; full, first %d seeds: >= %zu samples, >= %zu nodes\n", kSeeds,
-              pmd.samples, pmd.nodes, seedsRun, full.samples, full.nodes);
+  EXPECT_GE(full.samples, needed.samples) << "pmd drew " << pmd.samples << " samples over " << kClaimSeeds << " seeds";
+  EXPECT_GE(full.nodes, needed.nodes) << "pmd built " << pmd.nodes << " nodes over " << kClaimSeeds << " seeds";
+  std::printf("pmd over %d seeds: %zu samples, %zu nodes; full, first %d seeds: >= %zu samples, >= %zu nodes\n",
+              kClaimSeeds, pmd.samples, pmd.nodes, seedsRun, full.samples, full.nodes);
 }
 
 }  // namespace

@@ -7,11 +7,10 @@
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/world/task.hpp"
+#include "support/paper_tasks.hpp"
 
 namespace pmdplan {
 namespace {
-
-const std::vector<std::string> kTasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
 
 Eigen::Isometry3d palmPose(ExactCollisionChecker& checker, const Configuration& q) {
   return checker.kinematics().linkPoses(q)[static_cast<std::size_t>(checker.model().palmLink())];
@@ -78,7 +77,7 @@ TEST_P(EveryTask, TheGoalHandSurroundsItsTarget) {
   EXPECT_GT(closest, 0.0) << "the goal hand touches its target";
 }
 
-INSTANTIATE_TEST_SUITE_P(PaperTasks, EveryTask, ::testing::ValuesIn(kTasks));
+INSTANTIATE_TEST_SUITE_P(PaperTasks, EveryTask, ::testing::ValuesIn(test::kPaperTasks));
 
 }  // namespace
 }  // namespace pmdplan

@@ -17,7 +17,7 @@
 namespace pmdplan {
 namespace {
 
-constexpr int kSeeds = test::trials(3, 1);  // one seed in the sanitizer build
+constexpr int kSequenceSeeds = test::trials(3, 1);  // one seed in the sanitizer build
 
 using Case = std::tuple<std::string, RoadmapAlgorithm, SampleSequence>;
 class SequenceOnTask : public ::testing::TestWithParam<Case> {};
@@ -37,7 +37,7 @@ TEST_P(SequenceOnTask, EverySeedSolvesWithAValidPathAndRepeatsItself) {
   const SynergyModel model = loadSynergyModel(dataDirectory() / "synergies" / "sah_tx90_default.yaml");
   CollisionChecking checking(task, CheckerKind::Fast);
   SegmentChecker segments(checking.exact(), *task.robot, checking.tolerance());
-  for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
+  for (std::uint64_t seed = 1; seed <= kSequenceSeeds; ++seed) {
     const TaskPlanningResult result = plan(task, checking, model, seed);
     ASSERT_TRUE(result.statistics.solved()) << "seed " << seed << ": " << plannerStatusName(result.status);
     const PathValidation validation =

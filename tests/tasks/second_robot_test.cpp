@@ -21,6 +21,7 @@
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
 #include "support/run_cli.hpp"
+#include "support/sanitizer_build.hpp"
 #include "support/temp_dir.hpp"
 
 namespace pmdplan {
@@ -176,7 +177,7 @@ TEST(SecondRobot, PmdSolvesEverySeedWithAValidPath) {
   const SynergyModel synergies = loadSynergyModel(kData / "synergies" / "panda_allegro_default.yaml");
   CollisionChecking checking(task, CheckerKind::Fast);
   SegmentChecker segments(checking.exact(), *task.robot, checking.tolerance());
-  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+  for (std::uint64_t seed = 1; seed <= test::trials(5, 1); ++seed) {
     TaskPlanningOptions options;
     options.parameters.seed = seed;
     options.parameters.timeLimit = 60.0;

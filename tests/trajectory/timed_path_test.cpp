@@ -10,6 +10,7 @@
 
 #include "pmdplan/core/random_source.hpp"
 #include "pmdplan/trajectory/joint_trajectory.hpp"
+#include "support/sanitizer_build.hpp"
 
 namespace pmdplan {
 namespace {
@@ -51,7 +52,7 @@ TEST(TimedPath, RandomPathsKeepEveryLimitAndTheBlendingTolerance) {
   // the joints' accelerations drift by at most a few parts in a thousand, and along an arc the
   // velocity between two points on the velocity limit curve by a few parts in a hundred thousand.
   constexpr double kVelocitySlack = 1e-4, kAccelerationSlack = 5e-3;
-  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+  for (std::uint64_t seed = 1; seed <= test::trials(60, 15); ++seed) {
     const RandomCase c = randomCase(seed);
     TimingSettings settings;
     settings.blendTolerance = seed % 3 == 0 ? 0.0 : 0.05 * static_cast<double>(seed % 5 + 1);

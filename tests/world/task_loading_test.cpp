@@ -13,7 +13,7 @@ using test::kValidToyTask;
 using test::replaceOnce;
 using test::ToyTaskFolder;
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+constexpr double kOneDegree = std::numbers::pi / 180.0;
 
 class TaskLoading : public ::testing::Test {
  protected:
@@ -37,8 +37,8 @@ TEST_F(TaskLoading, ThePregraspIsOptionalAndReadLikeTheGoal) {
   const Task task =
       load(std::string(kValidToyTask) + "pregrasp:\n  joints_deg: {wrist: 10, shoulder: -20, elbow: 30}\n");
   ASSERT_TRUE(task.pregrasp);
-  EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("shoulder")], -20 * kDegree, 1e-12);
-  EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("wrist")], 10 * kDegree, 1e-12);
+  EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("shoulder")], -20 * kOneDegree, 1e-12);
+  EXPECT_NEAR((*task.pregrasp)[task.robot->activeIndex("wrist")], 10 * kOneDegree, 1e-12);
 }
 
 TEST_F(TaskLoading, BasePoseFollowsXyzAndYaw) {
@@ -100,7 +100,7 @@ TEST_F(TaskLoading, RollPitchYawIsFixedAxisLikeUrdf) {
 }
 
 TEST_F(TaskLoading, GeneralRollPitchYawMatchesElementaryRotations) {
-  const double roll = 10 * kDegree, pitch = -25 * kDegree, yaw = 130 * kDegree;
+  const double roll = 10 * kOneDegree, pitch = -25 * kOneDegree, yaw = 130 * kOneDegree;
   const auto c = [](double a) { return std::cos(a); };
   const auto s = [](double a) { return std::sin(a); };
   Eigen::Matrix3d rx, ry, rz;
@@ -148,23 +148,23 @@ TEST_F(TaskLoading, ConfigurationFollowsTheModelOrderNotTheFileOrder) {
 TEST_F(TaskLoading, DegreesAreConvertedToRadians) {
   const Task task = load(kValidToyTask);
   const RobotModel& robot = *task.robot;
-  EXPECT_NEAR(task.start[robot.activeIndex("shoulder")], 10 * kDegree, 1e-15);
-  EXPECT_NEAR(task.start[robot.activeIndex("elbow")], 20 * kDegree, 1e-15);
-  EXPECT_NEAR(task.start[robot.activeIndex("wrist")], -30 * kDegree, 1e-15);
+  EXPECT_NEAR(task.start[robot.activeIndex("shoulder")], 10 * kOneDegree, 1e-15);
+  EXPECT_NEAR(task.start[robot.activeIndex("elbow")], 20 * kOneDegree, 1e-15);
+  EXPECT_NEAR(task.start[robot.activeIndex("wrist")], -30 * kOneDegree, 1e-15);
 }
 
 TEST_F(TaskLoading, JointsInRadiansEqualJointsInDegrees) {
   const Task inDegrees = load(kValidToyTask);
-  const std::string radians = "joints: {shoulder: " + std::to_string(10 * kDegree) +
-                              ", elbow: " + std::to_string(20 * kDegree) + ", wrist: " + std::to_string(-30 * kDegree) +
-                              "}";
+  const std::string radians = "joints: {shoulder: " + std::to_string(10 * kOneDegree) +
+                              ", elbow: " + std::to_string(20 * kOneDegree) +
+                              ", wrist: " + std::to_string(-30 * kOneDegree) + "}";
   const Task inRadians =
       load(replaceOnce(kValidToyTask, "joints_deg:\n    shoulder: 10\n    elbow: 20\n    wrist: -30", radians));
   EXPECT_TRUE(inRadians.start.isApprox(inDegrees.start, 1e-6));
   const Task goalInDegrees = load(replaceOnce(kValidToyTask, "joints: {wrist: 0.25, shoulder: -0.5, elbow: 1.0}",
-                                              "joints_deg: {wrist: " + std::to_string(0.25 / kDegree) +
-                                                  ", shoulder: " + std::to_string(-0.5 / kDegree) +
-                                                  ", elbow: " + std::to_string(1.0 / kDegree) + "}"));
+                                              "joints_deg: {wrist: " + std::to_string(0.25 / kOneDegree) +
+                                                  ", shoulder: " + std::to_string(-0.5 / kOneDegree) +
+                                                  ", elbow: " + std::to_string(1.0 / kOneDegree) + "}"));
   EXPECT_TRUE(goalInDegrees.goal.isApprox(inDegrees.goal, 1e-6));
 }
 

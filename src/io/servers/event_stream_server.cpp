@@ -29,17 +29,6 @@ bool sendNow(int connection, const std::string& bytes) {
   return true;
 }
 
-/// Blocking send for the static files (a page's script is larger than a socket buffer).
-void sendAll(int connection, const std::string& bytes) {
-  std::size_t sent = 0;
-  while (sent < bytes.size()) {
-    const ssize_t n = ::send(connection, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return;
-    sent += static_cast<std::size_t>(n);
-  }
-}
-
 }  // namespace
 
 EventStreamServer::EventStreamServer(std::filesystem::path root, int port) : root_(std::move(root)) {

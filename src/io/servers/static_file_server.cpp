@@ -31,15 +31,6 @@ std::string contentType(const std::filesystem::path& file) {
   return "application/octet-stream";
 }
 
-void sendAll(int connection, const std::string& bytes) {
-  std::size_t sent = 0;
-  while (sent < bytes.size()) {
-    const ssize_t n = ::send(connection, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
-    if (n <= 0) return;  // the browser went away: nothing to tell it
-    sent += static_cast<std::size_t>(n);
-  }
-}
-
 std::string response(int status, const std::string& reason, const std::string& type, const std::string& body,
                      bool withBody) {
   std::ostringstream head;
@@ -75,6 +66,16 @@ bool decodeTarget(const std::string& target, std::string& relative) {
 }
 
 }  // namespace
+
+void sendAll(int connection, const std::string& bytes) {
+  std::size_t sent = 0;
+  while (sent < bytes.size()) {
+    const ssize_t n = ::send(connection, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    sent += static_cast<std::size_t>(n);
+  }
+}
 
 int listenOnLoopback(int port, int& boundPort) {
   if (port < 0 || port > 65535) throw InputError("", "--serve", "expected a port number 0-65535 (0: any free port)");

@@ -17,6 +17,9 @@ std::string readRequestHead(int connection);
 std::string requestTarget(const std::string& request);
 /// The whole HTTP response to `request` from the files of `root` (the rules above).
 std::string staticFileResponse(const std::filesystem::path& root, const std::string& request);
+/// Sends all of `bytes` on a connected socket, waiting while its buffer is full (a page's script
+/// is larger than one); stops quietly if the peer went away (there is no one left to tell).
+void sendAll(int connection, const std::string& bytes);
 
 class StaticFileServer {
  public:
