@@ -7,12 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/viewer_document.hpp"
 #include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/world/task.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
-#include "support/viewer_document.hpp"
 
 namespace pmdplan {
 namespace {

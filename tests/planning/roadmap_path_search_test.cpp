@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
+#include "planning/planar_roadmap.hpp"
 #include "pmdplan/core/random_source.hpp"
-#include "support/planar_roadmap.hpp"
 
 namespace pmdplan {
 namespace {

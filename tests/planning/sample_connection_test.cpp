@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "support/planar_roadmap.hpp"
+#include "planning/planar_roadmap.hpp"
 
 namespace pmdplan {
 namespace {
