@@ -1,18 +1,23 @@
 // `pmdplan check [TASK] [--json]`: are the task's start and goal valid (or is the goal a grasp of
-// the target), how far is each from the obstacles (clearance, or penetration depth), where is the
-// palm, and is the straight joint-space segment between them free at the motion tolerance?
+// the target, and which pre-grasp will plan take), how far is each from the obstacles (clearance,
+// or penetration depth), where is the palm, is the straight joint-space segment between them free
+// at the motion tolerance, and will `plan` take the task (if not, why: the grasp rule's verdict,
+// grasp_rule.hpp and grasp_approach.hpp)? Exit 0 plan will take it, 1 plan will refuse it, 2 bad
+// input.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "command_registry.hpp"
+#include "grasp_options.hpp"
 #include "package_path_option.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
-#include "pmdplan/collision/grasp_contact.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/planning/grasp_approach.hpp"
 #include "pmdplan/world/task.hpp"
 #include "robot_setup.hpp"
 
@@ -23,6 +28,7 @@ struct Options {
   std::string task = "can_on_table";
   bool json = false;
   double toleranceMm = 1.0;
+  GraspOptions grasp;
 };
 
 nlohmann::json pairsJson(const CollisionReport& report) {
@@ -53,9 +59,14 @@ std::string describe(const std::string& label, const nlohmann::json& c) {
   char line[256];
   const auto& p = c["palm_position"];
   const auto& z = c["palm_z_axis"];
+  // A grasp's contact with its target is allowed contact, not a collision (grasp_rule.hpp).
+  const bool grasp = c.contains("grasp");
   std::snprintf(line, sizeof line, "%-6s %-9s palm at (%.4f, %.4f, %.4f) m, palm z (%.3f, %.3f, %.3f)", label.c_str(),
-                c["valid"].get<bool>() ? "valid" : "IN COLLISION", p[0].get<double>(), p[1].get<double>(),
-                p[2].get<double>(), z[0].get<double>(), z[1].get<double>(), z[2].get<double>());
+                grasp                    ? "GRASP"
+                : c["valid"].get<bool>() ? "valid"
+                                         : "IN COLLISION",
+                p[0].get<double>(), p[1].get<double>(), p[2].get<double>(), z[0].get<double>(), z[1].get<double>(),
+                z[2].get<double>());
   std::string text = line;
   if (!c["clearance_mm"].is_null()) {
     const double mm = c["clearance_mm"].get<double>();
@@ -63,21 +74,50 @@ std::string describe(const std::string& label, const nlohmann::json& c) {
                   std::abs(mm), c["nearest"][0].get<std::string>().c_str(), c["nearest"][1].get<std::string>().c_str());
     text += line;
   }
-  if (c.contains("grasp"))
-    text += "\n         grasps the target " + c["grasp"].get<std::string>() + ": planned as an approach, then closing";
+  if (grasp) {
+    text += "\n         grasps the target " + c["grasp"].get<std::string>() + ": planned as an approach";
+    if (c.contains("pregrasp")) {
+      const auto& pregrasp = c["pregrasp"];
+      std::snprintf(line, sizeof line, " to a pre-grasp (%s, %.1f mm from the target)",
+                    pregrasp["derived"].get<bool>() ? "the goal hand opened" : "the task's pregrasp",
+                    pregrasp["clearance_mm"].get<double>());
+      text += line;
+    }
+    text += ", then closing";
+  }
   for (const auto& pair : c["collisions"])
-    text += "\n         collides: " + pair[0].get<std::string>() + " - " + pair[1].get<std::string>();
+    text += std::string("\n         ") + (grasp ? "grasp contact (allowed): " : "collides: ") +
+            pair[0].get<std::string>() + " - " + pair[1].get<std::string>();
   return text;
+}
+
+/// What plan will make of the task: the refusals (start, goal or pre-grasp), and on the goal a
+/// grasp's target and pre-grasp.
+nlohmann::json planVerdict(ExactCollisionChecker& checker, const Task& task, double tolerance,
+                           const GraspSettings& grasp, nlohmann::json& goal) {
+  auto refusals = nlohmann::json::array();
+  const auto add = [&](const PlanRefusal& refusal) {
+    refusals.push_back({{"field", refusal.field}, {"reason", refusal.reason}, {"pairs", pairsJson(refusal.pairs)}});
+  };
+  if (const auto start = GraspRule(task).startRefusal(checker)) add(*start);
+  const GoalExamination examined = examineGoal(task, checker, tolerance, grasp);
+  if (examined.contact.contact == GoalContact::GraspsTarget) goal["grasp"] = *task.target;
+  if (const auto& a = examined.approach)
+    goal["pregrasp"] = {{"derived", a->derived}, {"opening", a->opening}, {"clearance_mm", 1000.0 * a->clearance}};
+  if (examined.refusal) add(*examined.refusal);
+  return {{"accepts", refusals.empty()}, {"refusals", std::move(refusals)}};
 }
 
 int run(const Options& o) {
   checkMotionToleranceMm(o.toleranceMm);
+  const GraspSettings grasp = resolveGraspSettings(o.grasp);
   const Task task = loadTaskByName(o.task);
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
   const auto start = configurationJson(checker, task.start);
   auto goal = configurationJson(checker, task.goal);
-  if (classifyGoal(checker, task).contact == GoalContact::GraspsTarget) goal["grasp"] = *task.target;
+  const nlohmann::json plan = planVerdict(checker, task, o.toleranceMm / 1000.0, grasp, goal);
+  const int exitCode = plan["accepts"].get<bool>() ? 0 : 1;
   const auto line = segments.inspect(checker, task.start, task.goal);
   nlohmann::json straight = {
       {"free", line.free},
@@ -87,9 +127,10 @@ int run(const Options& o) {
       {"states_needed", line.statesNeeded},
       {"tolerance_mm", o.toleranceMm}};
   if (o.json) {
-    nlohmann::json out = {{"task", task.name}, {"start", start}, {"goal", goal}, {"straight_line", straight}};
+    nlohmann::json out = {
+        {"task", task.name}, {"start", start}, {"goal", goal}, {"straight_line", straight}, {"plan", plan}};
     std::cout << out.dump(2) << "\n";
-    return 0;
+    return exitCode;
   }
   std::cout << "task " << task.name << " (" << task.file.string() << ")\n"
             << describe("start", start) << "\n"
@@ -102,16 +143,22 @@ int run(const Options& o) {
                 100.0 * *line.firstCollision, line.statesChecked, line.statesNeeded, o.toleranceMm);
     for (const auto& [a, b] : line.collisions.pairs) std::cout << "         collides: " << a << " - " << b << "\n";
   }
-  return 0;
+  for (const auto& refusal : plan["refusals"])
+    std::cout << "plan will refuse the task's " << refusal["field"].get<std::string>() << ": "
+              << refusal["reason"].get<std::string>() << "\n";
+  if (exitCode == 0) std::cout << "plan will take the task\n";
+  return exitCode;
 }
 
 const CommandRegistrar registrar{
-    "check", "Check a task: start and goal validity, palm poses, the straight segment", [](CLI::App& app) {
+    "check", "Check a task: start and goal validity, palm poses, the straight segment, whether plan will take it",
+    [](CLI::App& app) {
       auto o = std::make_shared<Options>();
       addPackagePathOption(app);
       app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
       app.add_flag("--json", o->json, "Print JSON instead of text");
       app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
+      addGraspOptions(app, o->grasp);
       return [o] { return run(*o); };
     }};
 

@@ -5,10 +5,12 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "grasp_options.hpp"
 #include "package_path_option.hpp"
 #include "planner_setting_options.hpp"
 #include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
@@ -44,8 +46,7 @@ struct Options {
   std::string synergies;
   PlannerSettingOptions settings;
   double toleranceMm = 1.0;
-  double graspClearanceMm = 1000.0 * GraspSettings{}.clearance;
-  double openingStep = GraspSettings{}.openingStep;
+  GraspOptions grasp;
   std::string output;
   std::string csv;
   bool json = false;
@@ -69,8 +70,7 @@ int run(const Options& o) {
       planningSpaceFromRobot(*task.robot);  // a robot without groups is told how to get them before anything else
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
   // The goal may grasp the target (planTask checks it and refuses other contact).
-  if (const auto report = checking.exact().check(task.start); !report.free())
-    throw InputError(task.file.string(), "start", "the start configuration is in collision: " + pairsText(report));
+  if (const auto refused = GraspRule(task).startRefusal(checking.exact())) refused->raise(task);
 
   const std::filesystem::path synergyFile = o.synergies.empty() && *mode == HandSamplingMode::Synergy
                                                 ? shippedSynergyModelPath(task.robot->name())
@@ -88,13 +88,7 @@ int run(const Options& o) {
   options.parameters = resolvePlannerSettings(o.settings, *mode);
   options.synergies = synergies ? &*synergies : nullptr;
   const PlannerParameters& parameters = options.parameters;
-  options.grasp.clearance = o.graspClearanceMm / 1000.0;
-  options.grasp.openingStep = o.openingStep;
-  try {
-    options.grasp.check();
-  } catch (const InputError& e) {
-    throw InputError("", "--" + e.field(), e.message());
-  }
+  options.grasp = resolveGraspSettings(o.grasp);
   ProgressLine progress("planning " + task.name);
   const TaskPlanningResult result = planTask(task, checking, options, [&](const PlannerProgress& p) {
     char status[160];
@@ -160,10 +154,7 @@ const CommandRegistrar registrar{
       app.add_option("--synergies", o->synergies, "Synergy model file (default: the robot's shipped model)");
       app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
       addPlannerSettingOptions(app, o->settings);
-      app.add_option("--grasp-clearance-mm", o->graspClearanceMm,
-                     "A grasp goal's derived pre-grasp clears the target by this much");
-      app.add_option("--opening-step", o->openingStep,
-                     "Step of the pre-grasp search, a fraction of the way to the open hand");
+      addGraspOptions(app, o->grasp);
       app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
       app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
       std::string keys;

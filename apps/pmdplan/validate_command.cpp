@@ -1,14 +1,15 @@
 // `pmdplan validate TASK PATH.json`: an independent check of a path with the exact checker; a
 // grasp path's closing phase with the grasp rule (hand-target contact allowed, nothing else).
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
-#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/io/files/json_text.hpp"
 #include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/files/path_validation_json.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan::cli::validate_command {
@@ -30,18 +31,10 @@ int run(const Options& o) {
                      "the path's joints do not match the active joints of robot '" + task.robot->name() + "'");
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
-  const auto result = validateTaskPath(checker, segments, task, file.points, file.closingFrom);
+  const PathPhases phases{file.closingFrom};
+  const auto result = GraspRule(task).validatePath(checker, segments, file.points, phases);
   if (o.json) {
-    auto pairs = nlohmann::json::array();
-    for (const auto& [a, b] : result.collisions.pairs) pairs.push_back({a, b});
-    std::cout << nlohmann::json{{"valid", result.valid},
-                                {"states_checked", result.statesChecked},
-                                {"closing_from",
-                                 file.closingFrom ? nlohmann::json(*file.closingFrom) : nlohmann::json()},
-                                {"collisions", pairs},
-                                {"problems", result.problems}}
-                     .dump(2)
-              << "\n";
+    std::cout << formatJson(pathValidationJson(result, phases, o.toleranceMm));
   } else {
     std::cout << o.path << ": " << (result.valid ? "valid" : "INVALID") << " (" << file.points.size() << " points, "
               << result.statesChecked << " states checked at " << o.toleranceMm << " mm"

@@ -36,7 +36,7 @@ best = None
 for turn_deg, closing, goal in free:
     grasp_task = task.replace(goal=goal, name=f"{task.name}_turn{turn_deg}_close{closing}")
     result = pmdplan.plan(grasp_task, seed=1, time_limit=10)
-    if not result.solved or not pmdplan.validate(grasp_task, result.path)["valid"]:
+    if not result.solved or not pmdplan.validate(grasp_task, result.path, closing_from=result.closing_from)["valid"]:
         print(f"  turn {turn_deg:+3d} deg, closing {closing:+.1f} sigma: {result.status}")
         continue
     length = result.statistics["path_length"]

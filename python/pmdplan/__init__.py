@@ -9,7 +9,7 @@ numpy arrays), fit or load synergy models, check collisions, plan, validate and 
     task = pmdplan.Task.load("can_on_table")
     result = pmdplan.plan(task, "pmd", seed=1)
     result.path          # (points, dof) numpy array, radians
-    pmdplan.validate(task, result.path)["valid"]
+    pmdplan.validate(task, result.path, closing_from=result.closing_from)["valid"]  # a grasp's phases
 
 Bad input raises pmdplan.InputError (a ValueError) with the command line's message.
 """

@@ -15,9 +15,10 @@
 #include "pmdplan/bench/human_likeness.hpp"
 #include "pmdplan/bench/ompl_planning.hpp"
 #include "pmdplan/bench/planner_roster.hpp"
-#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/files/path_file.hpp"
+#include "pmdplan/io/files/path_validation_json.hpp"
 #include "pmdplan/io/files/statistics_json.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
@@ -45,16 +46,13 @@ py::object jsonToPython(const nlohmann::ordered_json& document) {
   return py::module_::import("json").attr("loads")(document.dump());
 }
 
-/// Throws the CLI's InputError if the task's start or goal collides (exact checker, all pairs).
-void requireFreeEnds(const Task& task, PyCollisionChecker& checker) {
+/// Throws the CLI's InputError if plan refuses the task's start or goal (the grasp rule: a goal
+/// may grasp the target, grasp_rule.hpp and grasp_approach.hpp).
+void requirePlannableEnds(const Task& task, PyCollisionChecker& checker) {
   py::gil_scoped_release release;
   std::lock_guard lock(checker.mutex);
-  for (const auto& [label, q] : {std::pair{"start", &task.start}, std::pair{"goal", &task.goal}}) {
-    const auto report = checker.checking->exact().check(*q);
-    if (!report.free())
-      throw InputError(task.file.string(), label,
-                       std::string("the ") + label + " configuration is in collision: " + pairsText(report));
-  }
+  if (const auto refused = GraspRule(task).startRefusal(checker.checking->exact())) refused->raise(task);
+  graspApproach(task, checker.checking->exact(), checker.checking->tolerance());
 }
 
 /// The checker to plan with: the caller's, or a new one of the named kind.
@@ -123,17 +121,21 @@ PyPlanResult planOmpl(const PyTask& task, PyCollisionChecker& checker, const Pla
   const PlanningSpace space = planningSpaceFromRobot(*task.task->robot);
   PyPlanResult result;
   OmplPlanningResult planned;
+  TaskApproach approach;
   {
     py::gil_scoped_release release;
     std::lock_guard lock(checker.mutex);
     const auto began = std::chrono::steady_clock::now();
+    // A grasp goal as planTask plans it: the approach to the pre-grasp, then the closing segment.
+    approach = taskApproach(*task.task, *checker.checking, GraspSettings{});
     planned = planWithOmpl(entry.omplName, space, checker.checking->states(), checker.checking->motions(),
-                           task.task->start, task.task->goal, limit, runSeed);
+                           task.task->start, approach.end(*task.task), limit, runSeed);
     result.callSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   }
+  if (planned.solved) result.closingFrom = appendClosing(*task.task, approach, planned.path);
   auto& s = result.statistics;
   s.status = planned.solved ? PlannerStatus::Solved : PlannerStatus::TimeLimit;
-  s.planningTime = planned.planningTimeSeconds;
+  s.planningTime = planned.planningTimeSeconds + approach.seconds;
   s.stateChecks = planned.stateChecks;
   s.motionChecks = planned.motionChecks;
   s.roadmapNodes = planned.graphStates;
@@ -153,14 +155,14 @@ PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle set
   if (!entry)
     throw InputError("", "--planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
   auto checking = checkerFor(task, checker, toleranceMm);
-  // The CLI's message for a colliding start or goal: checked first for OMPL's planners (they do
+  // The CLI's message for a start or goal plan refuses: checked first for OMPL's planners (they do
   // not check them), after the run for ours (they stop at once with that status; no cost otherwise).
-  if (entry->family == PlannerFamily::Ompl) requireFreeEnds(*task.task, *checking);
+  if (entry->family == PlannerFamily::Ompl) requirePlannableEnds(*task.task, *checking);
   PyPlanResult result = entry->family == PlannerFamily::Ompl
                             ? planOmpl(task, *checking, *entry, seed, timeLimit)
                             : planPmd(task, *checking, *entry, settings, synergies, seed, timeLimit);
   if (result.statistics.status == PlannerStatus::InvalidStart || result.statistics.status == PlannerStatus::InvalidGoal)
-    requireFreeEnds(*task.task, *checking);
+    requirePlannableEnds(*task.task, *checking);
   result.task = task.task->name;
   result.planner = entry->name;
   result.jointNames = task.task->robot->activeJointNames();
@@ -168,16 +170,20 @@ PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle set
   return result;
 }
 
-py::dict validate(const PyTask& task, py::handle path, double toleranceMm) {
+py::object validate(const PyTask& task, py::handle path, double toleranceMm, std::optional<std::size_t> closingFrom) {
   const double tolerance = parseToleranceOption(toleranceMm);
   std::vector<Configuration> points;
+  PathPhases phases{closingFrom};
   if (py::isinstance<py::str>(path) || py::hasattr(path, "__fspath__")) {
     const std::string file = py::str(path);
     const PathFile read = readPathFile(file);
     if (read.jointNames != task.task->robot->activeJointNames())
       throw InputError(file, "joint_names",
                        "the path's joints do not match the active joints of robot '" + task.task->robot->name() + "'");
+    if (closingFrom)
+      throw InputError(file, "closing_from", "a path file gives its own phases; pass closing_from with an array only");
     points = read.points;
+    phases.closingFrom = read.closingFrom;
   } else {
     points = configurationsFrom(task.task->robot->activeJoints(), path, "path", false);
   }
@@ -186,14 +192,9 @@ py::dict validate(const PyTask& task, py::handle path, double toleranceMm) {
     py::gil_scoped_release release;
     ExactCollisionChecker checker(*task.task);
     SegmentChecker segments(checker, *task.task->robot, tolerance);
-    validation = validatePath(checker, segments, points, task.task->start, task.task->goal);
+    validation = GraspRule(*task.task).validatePath(checker, segments, points, phases);
   }
-  py::dict result;
-  result["valid"] = validation.valid;
-  result["states_checked"] = validation.statesChecked;
-  result["collisions"] = validation.collisions.pairs;
-  result["problems"] = validation.problems;
-  return result;
+  return jsonToPython(pathValidationJson(validation, phases, toleranceMm));
 }
 
 py::dict humanLikeness(const PyTask& task, py::handle path, py::handle synergies, double step, int subspaceDirections) {
@@ -227,6 +228,8 @@ void bindResult(py::module_& m) {
           "status", [](const PyPlanResult& r) { return plannerStatusName(r.statistics.status); },
           "solved, sample_limit, time_limit, invalid_start or invalid_goal.")
       .def_property_readonly("solved", [](const PyPlanResult& r) { return r.statistics.solved(); })
+      .def_readonly("closing_from", &PyPlanResult::closingFrom,
+                    "A grasp path's closing phase: the index of its first point (the pre-grasp), or None.")
       .def_property_readonly(
           "path", [](const PyPlanResult& r) { return pathArray(r.path, static_cast<int>(r.jointNames.size())); },
           "(points, dof) float64 array, start first and goal last; empty unless solved.")
@@ -269,9 +272,12 @@ void bindPlanning(py::module_& m) {
         "None (the robot's shipped model). The GIL is released while planning. OMPL planners seed OMPL's\n"
         "process-wide generator, which OMPL honours only before its first random number in a process.\n"
         "Raises InputError with the CLI's messages (bad planner, colliding start or goal, bad settings, model).");
-  m.def("validate", &validate, py::arg("task"), py::arg("path"), py::arg("tolerance_mm") = 1.0,
-        "The independent check of `pmdplan validate`: path is an (n, dof) array or a path file. Returns\n"
-        "{'valid', 'states_checked', 'collisions', 'problems'} (the keys of `pmdplan validate --json`).");
+  m.def("validate", &validate, py::arg("task"), py::arg("path"), py::arg("tolerance_mm") = 1.0, py::kw_only(),
+        py::arg("closing_from") = py::none(),
+        "The independent check of `pmdplan validate`, by the same grasp rule: path is an (n, dof) array or a\n"
+        "path file (whose phases count). closing_from (arrays only): a grasp path's closing phase starts at that\n"
+        "point (PlanResult.closing_from), with hand-target contact allowed from there. Returns {'valid',\n"
+        "'states_checked', 'tolerance_mm', 'closing_from', 'collisions', 'problems'} (`pmdplan validate --json`).");
   m.def("human_likeness", &humanLikeness, py::arg("task"), py::arg("path"), py::arg("synergies") = py::none(),
         py::arg("step") = 0.01, py::arg("subspace_directions") = HumanLikenessOptions{}.subspaceDirections,
         "How human-like a path's hand motion is (the benchmarks' measure): {'subspace_distance_mean',\n"

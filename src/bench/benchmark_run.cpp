@@ -5,7 +5,7 @@
 
 #include "pmdplan/bench/human_likeness.hpp"
 #include "pmdplan/bench/ompl_planning.hpp"
-#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
 #include "pmdplan/planning/task_planning.hpp"
@@ -60,12 +60,15 @@ RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord recor
                   PathFile* path) {
   const Task& task = bench.task();
   MotionValidator& motions = bench.checking().motions();
+  // A grasp goal as planTask plans it: OMPL's planner plans the approach to the pre-grasp (found
+  // and timed the same way), the closing segment follows after smoothing.
+  const TaskApproach approach = taskApproach(task, bench.checking(), GraspSettings{});
   const OmplPmdSampling pmdSampling{&bench.synergies(), parameters};
   const OmplPlanningResult result =
-      planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions, task.start, task.goal,
+      planWithOmpl(planner.omplName, bench.space(), bench.checking().states(), motions, task.start, approach.end(task),
                    parameters.timeLimit, record.seed, planner.pmdSampling ? &pmdSampling : nullptr);
   record.solved = result.solved;
-  record.planningTimeSeconds = result.planningTimeSeconds;
+  record.planningTimeSeconds = result.planningTimeSeconds + approach.seconds;
   record.samples = result.stateChecks;
   record.roadmapNodes = result.graphStates;
   record.collisionChecks = result.stateChecks + result.motionChecks;
@@ -75,11 +78,12 @@ RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord recor
   }
   const std::size_t motionChecksBefore = motions.statesChecked();
   const auto began = std::chrono::steady_clock::now();
-  const std::vector<Configuration> smoothed = smoothPath(result.path, bench.space(), motions);
+  std::vector<Configuration> smoothed = smoothPath(result.path, bench.space(), motions);
   record.smoothingTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   record.collisionChecks += motions.statesChecked() - motionChecksBefore;
-  assessPath(bench, smoothed, record);
-  keepPath(bench, record, smoothed, std::nullopt, PlanningStatistics{}, path);
+  const std::optional<std::size_t> closingFrom = appendClosing(task, approach, smoothed);
+  assessPath(bench, smoothed, record, closingFrom);
+  keepPath(bench, record, smoothed, closingFrom, PlanningStatistics{}, path);
   return record;
 }
 
@@ -110,7 +114,8 @@ void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRec
   if (!path.empty())
     record.humanLikeness = measureHumanLikeness(path, bench.space(), bench.synergies(), bench.synergySlots());
   const PathValidation validation =
-      validateTaskPath(bench.validationChecker(), bench.validationSegments(), bench.task(), path, closingFrom);
+      GraspRule(bench.task())
+          .validatePath(bench.validationChecker(), bench.validationSegments(), path, PathPhases{closingFrom});
   record.valid = validation.valid;
   if (!validation.valid)
     record.failure = "invalid path: " + (validation.problems.empty() ? std::string("rejected by validation")

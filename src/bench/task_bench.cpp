@@ -1,6 +1,7 @@
 #include "pmdplan/bench/task_bench.hpp"
 
-#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
+#include "pmdplan/planning/grasp_approach.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 #include "pmdplan/synergy/synergy_readout.hpp"
 
@@ -15,15 +16,9 @@ TaskBench::TaskBench(Task task, CheckerKind checker, double toleranceMetres, con
       validationSegments_(std::make_unique<SegmentChecker>(*validationChecker_, *task_->robot, toleranceMetres)),
       synergies_(synergies),
       synergySlots_(modelJointSlots(synergies, *task_->robot, synergyFile)) {
-  for (const auto& [label, q] : {std::pair{"start", &task_->start}, std::pair{"goal", &task_->goal}}) {
-    const CollisionReport report = validationChecker_->check(*q);
-    if (!report.free()) {
-      std::string pairs;
-      for (const auto& [a, b] : report.pairs) pairs += (pairs.empty() ? "" : ", ") + a + " - " + b;
-      throw InputError(task_->file.string(), label,
-                       std::string("the ") + label + " configuration is in collision: " + pairs);
-    }
-  }
+  // The start and goal plan takes, before any run: a grasp goal whose pre-grasp serves too.
+  if (const auto refused = GraspRule(*task_).startRefusal(*validationChecker_)) refused->raise(*task_);
+  if (const auto refused = examineGoal(*task_, *validationChecker_, toleranceMetres).refusal) refused->raise(*task_);
 }
 
 }  // namespace pmdplan

@@ -72,6 +72,35 @@ ConvexPart cylinderPart(const double* pose, double radius, double halfLength) {
   return part;
 }
 
+ConvexPart trianglePart(const double* a, const double* b, const double* c) {
+  ConvexPart part;
+  part.kind = ConvexPart::Kind::Triangle;
+  double centre[3];
+  for (int i = 0; i < 3; ++i)
+    part.a[i] = a[i], part.b[i] = b[i], part.c[i] = c[i], centre[i] = (a[i] + b[i] + c[i]) / 3;
+  const auto distance = [](const double* p, const double* q) {
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  };
+  setCentredBound(part, centre, std::max({distance(centre, a), distance(centre, b), distance(centre, c)}));
+  // The outer capsule: around the longest edge, as thick as the third corner's distance from it
+  // (every point of the triangle is no farther from that edge than its corners).
+  const double* corners[3] = {a, b, c};
+  int longest = 0;
+  for (int e = 1; e < 3; ++e)
+    if (distance(corners[e], corners[(e + 1) % 3]) > distance(corners[longest], corners[(longest + 1) % 3]))
+      longest = e;
+  const double *p = corners[longest], *q = corners[(longest + 1) % 3], *r = corners[(longest + 2) % 3];
+  double pq[3], pr[3], length2 = 0.0, along = 0.0;
+  for (int i = 0; i < 3; ++i)
+    pq[i] = q[i] - p[i], pr[i] = r[i] - p[i], length2 += pq[i] * pq[i], along += pq[i] * pr[i];
+  const double t = length2 > 0.0 ? std::clamp(along / length2, 0.0, 1.0) : 0.0;
+  double across2 = 0.0;
+  for (int i = 0; i < 3; ++i) across2 += (pr[i] - t * pq[i]) * (pr[i] - t * pq[i]);
+  for (int i = 0; i < 3; ++i) part.outerA[i] = p[i], part.outerB[i] = q[i];
+  part.outerRadius = std::sqrt(across2) * (1.0 + 1e-12);
+  return part;
+}
+
 void placePart(const ConvexPart& local, const double* pose, ConvexPart& world) {
   world.kind = local.kind;
   world.enclosure = local.enclosure;
@@ -83,8 +112,9 @@ void placePart(const ConvexPart& local, const double* pose, ConvexPart& world) {
   transformPoint(pose, local.outerA, world.outerA);
   transformPoint(pose, local.outerB, world.outerB);
   world.outerRadius = local.outerRadius;
-  if (local.kind == ConvexPart::Kind::Capsule) {
+  if (local.kind == ConvexPart::Kind::Capsule || local.kind == ConvexPart::Kind::Triangle) {
     transformPoint(pose, local.b, world.b);
+    if (local.kind == ConvexPart::Kind::Triangle) transformPoint(pose, local.c, world.c);
     return;
   }
   for (int r = 0; r < 3; ++r)
@@ -99,6 +129,15 @@ void coreSupport(const ConvexPart& part, const double* d, double* point) {
         d[0] * (part.b[0] - part.a[0]) + d[1] * (part.b[1] - part.a[1]) + d[2] * (part.b[2] - part.a[2]);
     const double* end = along > 0.0 ? part.b : part.a;
     for (int i = 0; i < 3; ++i) point[i] = end[i];
+    return;
+  }
+  if (part.kind == ConvexPart::Kind::Triangle) {
+    const double* best = part.a;
+    double bestAlong = d[0] * part.a[0] + d[1] * part.a[1] + d[2] * part.a[2];
+    for (const double* corner : {part.b, part.c})
+      if (const double along = d[0] * corner[0] + d[1] * corner[1] + d[2] * corner[2]; along > bestAlong)
+        best = corner, bestAlong = along;
+    for (int i = 0; i < 3; ++i) point[i] = best[i];
     return;
   }
   const double* m = part.axes;
@@ -133,6 +172,8 @@ bool shrinkPart(const ConvexPart& part, double amount, ConvexPart& shrunk) {
     case ConvexPart::Kind::Cylinder:
       shrunk.half[0] -= amount, shrunk.half[1] -= amount;
       return shrunk.half[0] >= 0.0 && shrunk.half[1] >= 0.0;
+    case ConvexPart::Kind::Triangle:
+      return false;
   }
   return false;
 }

@@ -6,19 +6,19 @@
 #include <stdexcept>
 
 #include "fcl_geometry.hpp"
-#include "mesh_containment.hpp"
-#include "urdf_capsules.hpp"
+#include "mesh_part_contact.hpp"
+#include "pmdplan/collision/link_part_model.hpp"
+#include "primitive_contact.hpp"
 
 namespace pmdplan {
 
 struct PlacedGeometry {
   std::shared_ptr<fcl::CollisionGeometryd> geometry;
-  Eigen::Isometry3d pose;         ///< in the link frame (robot) or the world (obstacles)
-  double radius = 0.0;            ///< encloses the geometry around pose.translation()
-  bool againstBoxesOnly = false;  ///< a URDF capsule's second form (see the constructor)
-  /// A point of the geometry (in its frame): a primitive's centre, a mesh's first vertex.
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  std::shared_ptr<const MeshInterior> interior;  ///< meshes: what is inside them
+  Eigen::Isometry3d pose;  ///< in the link frame (robot) or the world (obstacles)
+  double radius = 0.0;     ///< encloses the geometry around pose.translation()
+  /// Meshes: their triangles as convex parts and their inside (mesh_part_contact.hpp). Primitives
+  /// are convex parts too (Geometry::parts, obstacleParts).
+  std::shared_ptr<const MeshParts> mesh;
 };
 
 /// An obstacle with its world-aligned bounding box: large flat obstacles (floor, table) have huge
@@ -34,7 +34,10 @@ struct LinkSphere {
 };
 
 struct ExactCollisionChecker::Geometry {
-  std::vector<std::vector<PlacedGeometry>> links;  ///< per link
+  std::vector<std::vector<PlacedGeometry>> links;    ///< per link, every shape for FCL (used where a mesh is involved)
+  std::vector<LinkParts> parts;                      ///< per link, its primitives as convex parts (meshes skipped)
+  std::vector<ObstaclePart> obstacleParts;           ///< per obstacle, in the world (exact = false: a mesh)
+  mutable std::vector<ConvexPart> placedA, placedB;  ///< scratch: parts posed in the world
   std::vector<LinkSphere> linkSpheres;
   std::vector<std::pair<int, int>> selfPairs;  ///< enabled link pairs that both have geometry
   std::vector<PlacedObstacle> obstacles;
@@ -53,36 +56,36 @@ bool sphereOutsideBox(const Eigen::Vector3d& centre, double radius, const Placed
   return (centre - nearest).squaredNorm() > radius * radius;
 }
 
-bool shapesCollide(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, const PlacedGeometry& b,
+/// FCL, for two meshes (triangle against triangle); a primitive takes primitive_contact.hpp's or
+/// mesh_part_contact.hpp's route.
+bool meshesCollide(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, const PlacedGeometry& b,
                    const Eigen::Isometry3d& poseB, const fcl::CollisionRequestd& request) {
-  if ((a.againstBoxesOnly && b.geometry->getNodeType() != fcl::GEOM_BOX) ||
-      (b.againstBoxesOnly && a.geometry->getNodeType() != fcl::GEOM_BOX))
-    return false;
+  if (!a.mesh || !b.mesh) return false;
   if (spheresApart(poseA.translation(), a.radius, poseB.translation(), b.radius)) return false;
   fcl::CollisionResultd result;
   fcl::collide(a.geometry.get(), poseA, b.geometry.get(), poseB, request, result);
   if (result.isCollision()) return true;
-  // No triangle touched: one wholly inside the other mesh (mesh_containment.hpp)?
-  return (b.interior && b.interior->contains(poseB.inverse() * (poseA * a.point))) ||
-         (a.interior && a.interior->contains(poseA.inverse() * (poseB * b.point)));
+  // No triangle touched: one wholly inside the other (mesh_containment.hpp)?
+  return b.mesh->interior->contains(poseB.inverse() * (poseA * a.mesh->vertex)) ||
+         a.mesh->interior->contains(poseA.inverse() * (poseB * b.mesh->vertex));
 }
 
-/// Geometry for `shape` placed at `pose`, with its point and, for a mesh, its interior.
+/// Geometry for `shape` placed at `pose`; for a mesh, its triangles and inside too.
 PlacedGeometry placedGeometry(const Shape& shape, const Eigen::Isometry3d& pose) {
-  PlacedGeometry placed{makeFclGeometry(shape), pose};
+  PlacedGeometry placed;
+  placed.geometry = makeFclGeometry(shape);
+  placed.pose = pose;
   placed.radius = enclosingRadius(shape, *placed.geometry);
-  if (const auto* mesh = std::get_if<MeshShape>(&shape)) {
-    auto triangles =
-        mesh->triangles ? mesh->triangles : std::make_shared<const TriangleMesh>(readMeshFile(mesh->file, mesh->scale));
-    placed.point = triangles->vertices[triangles->triangles.front()[0]];
-    placed.interior = std::make_shared<const MeshInterior>(std::move(triangles));
-  }
+  if (const auto* mesh = std::get_if<MeshShape>(&shape))
+    placed.mesh = std::make_shared<const MeshParts>(
+        meshParts(mesh->triangles ? mesh->triangles
+                                  : std::make_shared<const TriangleMesh>(readMeshFile(mesh->file, mesh->scale))));
   return placed;
 }
 
-/// Distance between two shapes, or minus their penetration depth when they overlap. Whether they
-/// overlap is the collision test's answer; the depth is FCL's signed distance, which only its
-/// libccd solver computes (EPA) for these shapes; a depth it misses counts as touching (0).
+/// FCL's distance between two meshes, or minus their penetration depth when they
+/// overlap. Whether they overlap is the collision test's answer; the depth is FCL's signed
+/// distance, which only its libccd solver computes (EPA); a depth it misses counts as touching (0).
 double signedDistance(const PlacedGeometry& a, const Eigen::Isometry3d& poseA, const PlacedGeometry& b,
                       const Eigen::Isometry3d& poseB, const fcl::CollisionRequestd& collisionRequest,
                       const fcl::DistanceRequestd& distanceRequest) {
@@ -114,19 +117,6 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
   for (std::size_t l = 0; l < links.size(); ++l) {
     const auto& shapes = links[l].collisionShapes;
     for (const auto& placed : shapes) g.links[l].push_back(placedGeometry(placed.shape, placed.pose));
-    // Against boxes, a URDF capsule (a cylinder capped by two spheres of its radius) goes to FCL
-    // as one capsule too. The union is the same solid, but FCL 0.7 (GJK, GST_INDEP) misses some
-    // contacts of a box with a cylinder, and others of a box with a capsule: asked both ways it
-    // misses neither kind (the fast checker's equivalence tests, which decide these pairs
-    // geometrically, found both).
-    for (const UrdfCapsule& capsule : urdfCapsules(shapes)) {
-      if (capsule.capA < 0) continue;
-      const PlacedShape& cylinder = shapes[static_cast<std::size_t>(capsule.cylinder)];
-      const double length = std::get<CylinderShape>(cylinder.shape).length;
-      auto geometry = std::make_shared<fcl::Capsuled>(capsule.radius, length);
-      geometry->computeLocalAABB();
-      g.links[l].push_back({geometry, cylinder.pose, 0.5 * length + capsule.radius, true});
-    }
     if (g.links[l].empty()) continue;
     // Centre: the middle of the shapes' bounding-sphere box; radius: what reaches every shape.
     Eigen::Vector3d low = Eigen::Vector3d::Constant(1e300), high = -low;
@@ -144,6 +134,13 @@ ExactCollisionChecker::ExactCollisionChecker(const Task& task)
       if (!g.links[a].empty() && !g.links[b].empty() &&
           !model_.isCollisionPairDisabled(static_cast<int>(a), static_cast<int>(b)))
         g.selfPairs.emplace_back(static_cast<int>(a), static_cast<int>(b));
+  // Two primitives go our own route (primitive_contact.hpp); FCL sees the pairs with a mesh.
+  g.parts = linkParts(model_);
+  for (auto& link : g.parts)
+    link.parts.erase(
+        std::remove_if(link.parts.begin(), link.parts.end(), [](const ConvexPart& p) { return p.enclosure; }),
+        link.parts.end());
+  g.obstacleParts = obstacleParts(task.obstacles);
   for (const auto& obstacle : task.obstacles) {
     PlacedObstacle placed;
     static_cast<PlacedGeometry&>(placed) = placedGeometry(obstacle.shape, obstacle.pose);
@@ -184,6 +181,49 @@ ExactCollisionChecker::~ExactCollisionChecker() = default;
 
 const std::vector<std::pair<int, int>>& ExactCollisionChecker::selfPairs() const { return geometry_->selfPairs; }
 
+namespace {
+
+void plainPose(const Eigen::Isometry3d& pose, double* out) {
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out[r * 3 + c] = pose.linear()(r, c);
+    out[9 + r] = pose.translation()(r);
+  }
+}
+
+/// The link's primitive parts posed in the world, into `placed`.
+const std::vector<ConvexPart>& placeParts(const LinkParts& link, const Eigen::Isometry3d& pose,
+                                          std::vector<ConvexPart>& placed) {
+  double plain[12];
+  plainPose(pose, plain);
+  placed.resize(link.parts.size());
+  for (std::size_t p = 0; p < link.parts.size(); ++p) placePart(link.parts[p], plain, placed[p]);
+  return placed;
+}
+
+bool boundsApart(const ConvexPart& a, const ConvexPart& b) {
+  return spheresApart(Eigen::Vector3d(a.boundCentre[0], a.boundCentre[1], a.boundCentre[2]), a.boundRadius,
+                      Eigen::Vector3d(b.boundCentre[0], b.boundCentre[1], b.boundCentre[2]), b.boundRadius);
+}
+
+bool anyTouch(const std::vector<ConvexPart>& as, const std::vector<ConvexPart>& bs) {
+  for (const auto& a : as)
+    for (const auto& b : bs)
+      if (!boundsApart(a, b) && primitivesTouch(a, b)) return true;
+  return false;
+}
+
+/// Any mesh of `shapes` (posed by `pose`) against any of `parts` (in the world).
+bool meshTouchesAny(const std::vector<PlacedGeometry>& shapes, const Eigen::Isometry3d& pose,
+                    const std::vector<ConvexPart>& parts) {
+  for (const auto& shape : shapes)
+    if (shape.mesh)
+      for (const auto& part : parts)
+        if (meshTouchesPart(*shape.mesh, pose * shape.pose, part)) return true;
+  return false;
+}
+
+}  // namespace
+
 bool ExactCollisionChecker::linkPairCollides(const LinkPoses& poses, int a, int b) const {
   const auto& g = *geometry_;
   const auto& pa = poses[static_cast<std::size_t>(a)];
@@ -191,9 +231,15 @@ bool ExactCollisionChecker::linkPairCollides(const LinkPoses& poses, int a, int 
   const auto& sa = g.linkSpheres[static_cast<std::size_t>(a)];
   const auto& sb = g.linkSpheres[static_cast<std::size_t>(b)];
   if (spheresApart(pa * sa.centre, sa.radius, pb * sb.centre, sb.radius)) return false;
-  for (const auto& shapeA : g.links[static_cast<std::size_t>(a)])
-    for (const auto& shapeB : g.links[static_cast<std::size_t>(b)])
-      if (shapesCollide(shapeA, pa * shapeA.pose, shapeB, pb * shapeB.pose, g.request)) return true;
+  const auto& shapesA = g.links[static_cast<std::size_t>(a)];
+  const auto& shapesB = g.links[static_cast<std::size_t>(b)];
+  const auto& partsA = placeParts(g.parts[static_cast<std::size_t>(a)], pa, g.placedA);
+  const auto& partsB = placeParts(g.parts[static_cast<std::size_t>(b)], pb, g.placedB);
+  if (anyTouch(partsA, partsB) || meshTouchesAny(shapesA, pa, partsB) || meshTouchesAny(shapesB, pb, partsA))
+    return true;
+  for (const auto& shapeA : shapesA)
+    for (const auto& shapeB : shapesB)
+      if (meshesCollide(shapeA, pa * shapeA.pose, shapeB, pb * shapeB.pose, g.request)) return true;
   return false;
 }
 
@@ -204,10 +250,17 @@ bool ExactCollisionChecker::linkObstacleCollides(const LinkPoses& poses, int lin
   const auto& pose = poses[l];
   const auto& obstacle = g.obstacles[o];
   if (sphereOutsideBox(pose * g.linkSpheres[l].centre, g.linkSpheres[l].radius, obstacle)) return false;
+  const auto& parts = placeParts(g.parts[l], pose, g.placedA);
+  if (!obstacle.mesh) {  // a primitive: against the link's parts, then its meshes
+    g.placedB.assign(1, g.obstacleParts[o].part);
+    return anyTouch(parts, g.placedB) || meshTouchesAny(g.links[l], pose, g.placedB);
+  }
+  for (const auto& part : parts)
+    if (meshTouchesPart(*obstacle.mesh, obstacle.pose, part)) return true;
   return std::any_of(g.links[l].begin(), g.links[l].end(), [&](const PlacedGeometry& shape) {
     const Eigen::Isometry3d shapePose = pose * shape.pose;
     return !sphereOutsideBox(shapePose.translation(), shape.radius, obstacle) &&
-           shapesCollide(shape, shapePose, obstacle, obstacle.pose, g.request);
+           meshesCollide(shape, shapePose, obstacle, obstacle.pose, g.request);
   });
 }
 
@@ -259,6 +312,24 @@ CollisionReport ExactCollisionChecker::check(const Configuration& q) {
   return report;
 }
 
+double ExactCollisionChecker::linkObstacleDistance(int link, std::size_t o) const {
+  const auto& g = *geometry_;
+  const auto l = static_cast<std::size_t>(link);
+  const auto& obstacle = g.obstacles[o];
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& part : placeParts(g.parts[l], poses_[l], g.placedA))
+    best = std::min(best, obstacle.mesh ? meshPartDistance(*obstacle.mesh, obstacle.pose, part)
+                                        : primitiveSignedDistance(part, g.obstacleParts[o].part));
+  for (const auto& shape : g.links[l]) {
+    if (!shape.mesh) continue;
+    const Eigen::Isometry3d shapePose = poses_[l] * shape.pose;
+    best = std::min(best, obstacle.mesh
+                              ? signedDistance(shape, shapePose, obstacle, obstacle.pose, g.request, g.distanceRequest)
+                              : meshPartDistance(*shape.mesh, shapePose, g.obstacleParts[o].part));
+  }
+  return best;
+}
+
 double ExactCollisionChecker::distanceToObstacle(const Configuration& q, const std::vector<int>& links,
                                                  const std::string& obstacleName) {
   const auto& g = *geometry_;
@@ -269,12 +340,7 @@ double ExactCollisionChecker::distanceToObstacle(const Configuration& q, const s
   double best = std::numeric_limits<double>::infinity();
   for (int l : links) {
     if (l < 0 || static_cast<std::size_t>(l) >= g.links.size()) throw std::invalid_argument("link index out of range");
-    for (const auto& shape : g.links[static_cast<std::size_t>(l)]) {
-      fcl::DistanceResultd result;
-      fcl::distance(shape.geometry.get(), poses_[static_cast<std::size_t>(l)] * shape.pose,
-                    g.obstacles[o].geometry.get(), g.obstacles[o].pose, g.distanceRequest, result);
-      best = std::min(best, result.min_distance);
-    }
+    best = std::min(best, linkObstacleDistance(l, o));
   }
   return best;
 }
@@ -286,14 +352,11 @@ std::optional<Clearance> ExactCollisionChecker::clearance(const Configuration& q
   std::optional<Clearance> best;
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
     if (obstacleName && task_.obstacles[o].name != *obstacleName) continue;
-    for (std::size_t l = 0; l < g.links.size(); ++l)
-      for (const auto& shape : g.links[l]) {
-        // A capsule's second form is asked against boxes only, as in the collision test.
-        if (shape.againstBoxesOnly && g.obstacles[o].geometry->getNodeType() != fcl::GEOM_BOX) continue;
-        const double d = signedDistance(shape, poses_[l] * shape.pose, g.obstacles[o], g.obstacles[o].pose, g.request,
-                                        g.distanceRequest);
-        if (!best || d < best->metres) best = Clearance{d, {model_.links()[l].name, task_.obstacles[o].name}};
-      }
+    for (std::size_t l = 0; l < g.links.size(); ++l) {
+      if (g.links[l].empty()) continue;
+      const double d = linkObstacleDistance(static_cast<int>(l), o);
+      if (!best || d < best->metres) best = Clearance{d, {model_.links()[l].name, task_.obstacles[o].name}};
+    }
   }
   return best;
 }

@@ -36,34 +36,11 @@ CollisionReport GraspContactRule::forbidden(const CollisionReport& report) const
   return result;
 }
 
-GoalContactReport classifyGoal(ExactCollisionChecker& checker, const Task& task) {
-  GoalContactReport result;
-  CollisionReport report = checker.check(task.goal);
-  if (report.free()) return result;
-  if (!task.target) {
-    result.contact = GoalContact::Refused;
-    result.pairs = std::move(report);
-    return result;
-  }
-  const GraspContactRule rule(task);
-  CollisionReport forbidden = rule.forbidden(report);
-  if (forbidden.free()) {
-    result.contact = GoalContact::GraspsTarget;
-    result.pairs = std::move(report);
-  } else {
-    result.contact = GoalContact::Refused;
-    result.pairs = std::move(forbidden);
-  }
+CollisionReport GraspContactRule::allowed(const CollisionReport& report) const {
+  CollisionReport result;
+  for (const auto& pair : report.pairs)
+    if (allows(pair)) result.pairs.push_back(pair);
   return result;
-}
-
-GoalContact requirePlannableGoal(ExactCollisionChecker& checker, const Task& task) {
-  const GoalContactReport goal = classifyGoal(checker, task);
-  if (goal.contact != GoalContact::Refused) return goal.contact;
-  const std::string rule = task.target ? "only hand links may touch, and only the target '" + *task.target + "'"
-                                       : "a goal may touch only the task's target, and the task names none";
-  throw InputError(task.file.string(), "goal",
-                   "the goal configuration is in collision: " + pairsText(goal.pairs) + " (" + rule + ")");
 }
 
 }  // namespace pmdplan

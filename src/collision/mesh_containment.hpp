@@ -1,6 +1,6 @@
 #pragma once
-// Internal: FCL tests a mesh's triangles, so geometry wholly inside a closed mesh touches none of
-// them and FCL reports no contact. The exact checker adds this test for such pairs, so that a
+// Internal: the exact checker tests a mesh's triangles, so geometry wholly inside a closed mesh
+// touches none of them. The exact checker adds this test for such pairs, so that a
 // closed mesh is a solid as the primitives are: a point is inside where rays from it cross the
 // surface an odd number of times (whatever way the triangles face). An open mesh has an inside
 // only where its triangles happen to close around the point.

@@ -1,9 +1,9 @@
 #pragma once
-// Internal: the fast checker's stand-in for a mesh. FCL tests a mesh's triangles; the fast checker
-// bounds them by one convex part that contains every vertex (so the triangles and their convex
+// Internal: the fast checker's stand-in for a mesh. The exact checker tests a mesh's triangles;
+// the fast checker bounds them by one convex part that contains every vertex (so the triangles and their convex
 // hull): the smallest by volume of boxes, cylinders and capsules along the mesh's own axes and its
 // vertices' principal axes. The part is marked as an enclosure: apart from it is apart from the
-// mesh, an overlap with it proves nothing (FCL decides).
+// mesh, an overlap with it proves nothing (the exact checker decides).
 #include <Eigen/Geometry>
 
 #include "pmdplan/collision/convex_part.hpp"

@@ -57,17 +57,4 @@ PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker
   return result;
 }
 
-PathValidation validateTaskPath(ExactCollisionChecker& checker, const SegmentChecker& segments, const Task& task,
-                                const std::vector<Configuration>& path, std::optional<std::size_t> closingFrom) {
-  if (!closingFrom) return validatePath(checker, segments, path, task.start, task.goal);
-  if (!task.target) {
-    PathValidation result;
-    result.valid = false;
-    result.problems.push_back("the path has a closing phase, but the task names no target that the hand may touch");
-    return result;
-  }
-  const GraspContactRule rule(task);
-  return validatePath(checker, segments, path, task.start, task.goal, ClosingPhase{*closingFrom, &rule});
-}
-
 }  // namespace pmdplan

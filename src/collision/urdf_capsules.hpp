@@ -1,8 +1,7 @@
 #pragma once
 // Internal: how URDF spells a capsule — a cylinder with a sphere of its radius on each cap centre.
-// Both checkers treat such a triple as one capsule: the fast checker's parts, and the exact
-// checker's FCL geometry (fcl::Capsule; FCL 0.7's cylinder-box test misses contacts that its
-// capsule-box test finds).
+// Both checkers treat such a triple as one capsule part (link_part_model.hpp): the same solid, and
+// a segment core that GJK decides exactly where a cylinder's rim converges slowly.
 #include <vector>
 
 #include "pmdplan/model/robot_model.hpp"

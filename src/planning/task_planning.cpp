@@ -9,6 +9,22 @@
 
 namespace pmdplan {
 
+TaskApproach taskApproach(const Task& task, CollisionChecking& checking, const GraspSettings& settings) {
+  const auto began = std::chrono::steady_clock::now();
+  TaskApproach approach;
+  approach.grasp = graspApproach(task, checking.exact(), checking.tolerance(), settings);
+  if (approach.grasp)
+    approach.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  return approach;
+}
+
+std::optional<std::size_t> appendClosing(const Task& task, const TaskApproach& approach,
+                                         std::vector<Configuration>& path) {
+  if (!approach.grasp) return std::nullopt;
+  path.push_back(task.goal);
+  return path.size() - 2;
+}
+
 TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningOptions& options,
                             ProgressCallback progress) {
   const PlanningSpace space = planningSpaceFromRobot(*task.robot);
@@ -22,10 +38,9 @@ TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const
     result.statistics.stateChecks = 1;
     return result;
   }
-  const auto began = std::chrono::steady_clock::now();
-  result.grasp = graspApproach(task, checking.exact(), checking.tolerance(), options.grasp);
-  const double graspSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  const Configuration& approachGoal = result.grasp ? result.grasp->pregrasp : task.goal;
+  const TaskApproach approach = taskApproach(task, checking, options.grasp);
+  result.grasp = approach.grasp;
+  const Configuration& approachGoal = approach.end(task);
   if (options.algorithm == RoadmapAlgorithm::Lazy) {
     LazyPmdPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
     planner.setStartAndGoal(task.start, approachGoal);
@@ -47,10 +62,9 @@ TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const
     result.statistics = planner.statistics();
   }
   // Finding the pre-grasp is part of solving the task.
-  if (result.grasp) result.statistics.planningTime += graspSeconds;
-  if (result.grasp && result.statistics.solved()) {
-    result.closingFrom = result.path.size() - 1;
-    result.path.push_back(task.goal);
+  result.statistics.planningTime += approach.seconds;
+  if (result.statistics.solved()) result.closingFrom = appendClosing(task, approach, result.path);
+  if (result.closingFrom) {
     result.statistics.pathNodes = result.path.size();
     result.statistics.pathLength = pathLength(result.path, space);
   }

@@ -29,6 +29,10 @@ TEST(CheckCli, ReportsStartGoalAndTheStraightSegmentAsJson) {
   EXPECT_LT(line["first_collision"].get<double>(), 1.0);
   ASSERT_FALSE(line["collisions"].empty());
   EXPECT_EQ(line["collisions"][0].size(), 2u);
+  // Nothing in the task makes plan refuse it (grasp_cli_test.cpp has the refusals).
+  EXPECT_TRUE(json["plan"]["accepts"].get<bool>());
+  EXPECT_TRUE(json["plan"]["refusals"].empty());
+  EXPECT_FALSE(json["goal"].contains("grasp")) << "the published goal touches nothing";
 }
 
 TEST(CheckCli, TheDefaultTaskIsCanOnTableInPlainText) {
@@ -36,6 +40,7 @@ TEST(CheckCli, TheDefaultTaskIsCanOnTableInPlainText) {
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_NE(result.out.find("task can_on_table"), std::string::npos);
   EXPECT_NE(result.out.find("straight segment start -> goal: in collision"), std::string::npos);
+  EXPECT_NE(result.out.find("plan will take the task\n"), std::string::npos) << result.out;
 }
 
 TEST(CheckCli, BadInputEndsWithOneClearMessageAndExitCodeTwo) {
@@ -44,7 +49,8 @@ TEST(CheckCli, BadInputEndsWithOneClearMessageAndExitCodeTwo) {
   for (const auto& [arguments, expected] :
        std::vector<std::pair<std::string, std::string>>{{"check no_such_task", "no_such_task"},
                                                         {"check '" + bad.string() + "'", bad.string()},
-                                                        {"check can_on_table --tolerance-mm -1", "--tolerance-mm"}}) {
+                                                        {"check can_on_table --tolerance-mm -1", "--tolerance-mm"},
+                                                        {"check can_on_table --opening-step 0", "--opening-step"}}) {
     const auto result = runCli(arguments);
     EXPECT_EQ(result.exitCode, 2) << arguments;
     EXPECT_NE(result.err.find("pmdplan: error: "), std::string::npos) << result.err;

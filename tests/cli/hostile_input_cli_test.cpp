@@ -62,7 +62,11 @@ TEST(HostileInput, TheTwoJointRobotOfTheseTestsLoads) {
   test::TempDir dir;
   const auto task = writeTask(dir, robotUrdf());
   const auto result = runCli(dir, "check " + quoted(task));
-  EXPECT_EQ(result.exitCode, 0) << result.err;
+  // It loads: no bad input. (Its adjacent links touch and the SRDF exempts none, so check says
+  // plan would refuse its start and goal: exit 1.)
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+  EXPECT_NE(result.out.find("plan will refuse the task's start"), std::string::npos) << result.out;
 }
 
 TEST(HostileInput, AUrdfThatIsNotATreeIsRefusedNamingTheJoint) {

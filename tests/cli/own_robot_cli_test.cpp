@@ -168,9 +168,12 @@ TEST(OwnRobotCli, HeldJointsStayWhereTheTaskPutsThem) {
                                                            "fixed: {joints_deg: {spare_yaw: 90, spare_shoulder: 60, "
                                                            "spare_elbow: 30, spare_wrist: 0, head_pan: 0}}\n"));
   const auto blocked = runCli(dir, "check " + quoted(blocking));
-  ASSERT_EQ(blocked.exitCode, 0) << blocked.err;
+  ASSERT_EQ(blocked.exitCode, 1) << blocked.err << "check says plan will refuse the task";
   EXPECT_NE(blocked.out.find("start  IN COLLISION"), std::string::npos) << blocked.out;
   EXPECT_NE(blocked.out.find("spare_"), std::string::npos) << blocked.out;
+  EXPECT_NE(blocked.out.find("plan will refuse the task's start: the start configuration is in collision"),
+            std::string::npos)
+      << blocked.out;
   const auto held = dir.write("held.yaml", armTask(robot,
                                                    "fixed: {joints_deg: {spare_yaw: 0, spare_shoulder: 30, "
                                                    "spare_elbow: 45, spare_wrist: 0, head_pan: 20}}\n"));

@@ -1,12 +1,11 @@
 // Grasps as goals (docs/grasp_goals.md): a goal whose hand sinks up to 2 mm into its target, as
 // grasp planners give them, plans as an approach to a pre-grasp and a closing with hand-target
 // contact allowed; a goal touching anything else is refused with the pair named; validation
-// applies the same rule phase by phase.
+// applies the same rule phase by phase (GraspRule, grasp_rule.hpp).
 #include <gtest/gtest.h>
 
 #include "pmdplan/collision/collision_checking.hpp"
-#include "pmdplan/collision/grasp_contact.hpp"
-#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
@@ -53,21 +52,65 @@ TEST(GraspGoal, CheckMeasuresThePenetrationDepthAndTheClearance) {
 TEST(GraspGoal, AGoalTouchingOnlyTheTargetIsAGraspAndAnyOtherContactIsRefused) {
   const Task published = loadTaskByName("can_on_table");
   ExactCollisionChecker publishedChecker(published);
-  EXPECT_EQ(classifyGoal(publishedChecker, published).contact, GoalContact::Free);
+  EXPECT_EQ(GraspRule(published).judgeGoal(publishedChecker).contact, GoalContact::Free);
 
   const Task task = test::graspingTask(kDepth);
   ExactCollisionChecker checker(task);
-  const auto grasp = classifyGoal(checker, task);
+  const auto grasp = GraspRule(task).judgeGoal(checker);
   EXPECT_EQ(grasp.contact, GoalContact::GraspsTarget);
+  EXPECT_FALSE(grasp.refusal);
   ASSERT_FALSE(grasp.pairs.free());
   for (const auto& [link, obstacle] : grasp.pairs.pairs) EXPECT_EQ(obstacle, "goal_can") << link;
 
   Task otherTarget = task;
   otherTarget.target = "obstacle_can";
   ExactCollisionChecker otherChecker(otherTarget);
-  EXPECT_EQ(classifyGoal(otherChecker, otherTarget).contact, GoalContact::Refused);
-  test::expectInputError([&] { requirePlannableGoal(otherChecker, otherTarget); }, otherTarget.file.string(), "goal",
+  const auto refused = GraspRule(otherTarget).judgeGoal(otherChecker);
+  EXPECT_EQ(refused.contact, GoalContact::Refused);
+  ASSERT_TRUE(refused.refusal);
+  EXPECT_EQ(refused.refusal->field, "goal");
+  EXPECT_EQ(refused.refusal->pairs.pairs, grasp.pairs.pairs) << "the hand-goal_can pairs are what the rule forbids";
+  test::expectInputError([&] { graspApproach(otherTarget, otherChecker, 0.001); }, otherTarget.file.string(), "goal",
                          grasp.pairs.pairs.front().first + " - goal_can");
+
+  // Without a target any contact is refused, naming every pair.
+  Task noTarget = task;
+  noTarget.target.reset();
+  ExactCollisionChecker noTargetChecker(noTarget);
+  const auto untargeted = GraspRule(noTarget).judgeGoal(noTargetChecker);
+  EXPECT_EQ(untargeted.contact, GoalContact::Refused);
+  ASSERT_TRUE(untargeted.refusal);
+  EXPECT_NE(untargeted.refusal->reason.find("names none"), std::string::npos) << untargeted.refusal->reason;
+}
+
+TEST(GraspGoal, TheRuleSortsAStatesPairsIntoCollisionsAndGraspContactByPhase) {
+  Task task = test::graspingTask(kDepth);
+  ExactCollisionChecker checker(task);
+  const GraspRule rule(task);
+  const auto approach = rule.judgeState(checker, task.goal, PathPhase::Approach);
+  EXPECT_FALSE(approach.free()) << "while approaching, touching the target is a collision";
+  EXPECT_TRUE(approach.allowed.free());
+  const auto closing = rule.judgeState(checker, task.goal, PathPhase::Closing);
+  EXPECT_TRUE(closing.free());
+  EXPECT_EQ(closing.allowed.pairs, approach.collisions.pairs) << "the same pairs, allowed as grasp contact";
+  EXPECT_TRUE(rule.counts({"index_distal_link", "goal_can"}, PathPhase::Approach));
+  EXPECT_FALSE(rule.counts({"index_distal_link", "goal_can"}, PathPhase::Closing));
+  EXPECT_TRUE(rule.counts({"tx90_link_6", "goal_can"}, PathPhase::Closing));
+  EXPECT_TRUE(rule.counts({"index_distal_link", "table"}, PathPhase::Closing));
+
+  task.target.reset();
+  ExactCollisionChecker untargeted(task);
+  EXPECT_FALSE(GraspRule(task).judgeState(untargeted, task.goal, PathPhase::Closing).free())
+      << "without a target nothing is grasp contact";
+}
+
+TEST(GraspGoal, PhasesSplitAPathAtItsPregrasp) {
+  const PathPhases phases{2};
+  EXPECT_EQ(phases.segment(1), PathPhase::Approach);
+  EXPECT_EQ(phases.segment(2), PathPhase::Closing);
+  EXPECT_EQ(phases.point(2), PathPhase::Approach) << "the pre-grasp ends the approach: every pair counts there";
+  EXPECT_EQ(phases.point(3), PathPhase::Closing);
+  EXPECT_EQ(PathPhases{}.segment(5), PathPhase::Approach);
 }
 
 TEST(GraspGoal, TheDerivedPregraspClearsTheTargetAndClosesOntoTheGoal) {
@@ -122,10 +165,11 @@ TEST_F(GraspPlanning, PlansAnApproachThenTheClosingAndValidates) {
   EXPECT_EQ(result_.path[k], result_.grasp->pregrasp);
   EXPECT_EQ(result_.path.back(), task_.goal);
   EXPECT_EQ(result_.statistics.pathNodes, result_.path.size());
-  const auto validation = validateTaskPath(checking_.exact(), segments_, task_, result_.path, result_.closingFrom);
+  const auto validation =
+      GraspRule(task_).validatePath(checking_.exact(), segments_, result_.path, PathPhases{result_.closingFrom});
   EXPECT_TRUE(validation.valid) << (validation.problems.empty() ? "" : validation.problems.front());
   // Without its phases the same path touches the target: the rule is what makes it valid.
-  const auto unmarked = validateTaskPath(checking_.exact(), segments_, task_, result_.path, std::nullopt);
+  const auto unmarked = GraspRule(task_).validatePath(checking_.exact(), segments_, result_.path, PathPhases{});
   EXPECT_FALSE(unmarked.valid);
   EXPECT_TRUE(names(unmarked.problems, "goal_can", "segment"));
 }
@@ -137,7 +181,8 @@ TEST_F(GraspPlanning, ValidationRejectsAnApproachThatTouchesTheTarget) {
   const Configuration pregrasp = path[*result_.closingFrom];
   path.push_back(pregrasp);
   path.push_back(task_.goal);
-  const auto validation = validateTaskPath(checking_.exact(), segments_, task_, path, path.size() - 2);
+  const auto validation =
+      GraspRule(task_).validatePath(checking_.exact(), segments_, path, PathPhases{path.size() - 2});
   EXPECT_FALSE(validation.valid);
   EXPECT_TRUE(names(validation.problems, "approach", "goal_can")) << validation.problems.front();
 }
@@ -153,7 +198,8 @@ TEST_F(GraspPlanning, ValidationRejectsAClosingThatTouchesAnotherObstacle) {
        Eigen::Isometry3d(Eigen::Translation3d(poses[task_.robot->linkIndex("index_distal_link")].translation()))});
   ExactCollisionChecker checker(blocked);
   const SegmentChecker segments(checker, *blocked.robot);
-  const auto validation = validateTaskPath(checker, segments, blocked, result_.path, result_.closingFrom);
+  const auto validation =
+      GraspRule(blocked).validatePath(checker, segments, result_.path, PathPhases{result_.closingFrom});
   EXPECT_FALSE(validation.valid);
   EXPECT_TRUE(names(validation.problems, "closing", "stray_ball")) << validation.problems.front();
   EXPECT_FALSE(names(validation.problems, "closing", "goal_can")) << "the target itself is allowed while closing";
@@ -164,7 +210,8 @@ TEST(GraspGoal, AClosingPhaseNeedsATarget) {
   task.target.reset();
   ExactCollisionChecker checker(task);
   const SegmentChecker segments(checker, *task.robot);
-  const auto validation = validateTaskPath(checker, segments, task, {task.start, task.start, task.goal}, 1);
+  const auto validation =
+      GraspRule(task).validatePath(checker, segments, {task.start, task.start, task.goal}, PathPhases{1});
   EXPECT_FALSE(validation.valid);
   EXPECT_TRUE(names(validation.problems, "closing phase", "no target"));
 }

@@ -9,7 +9,7 @@
 #include <tuple>
 
 #include "pmdplan/collision/collision_checking.hpp"
-#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
@@ -52,7 +52,7 @@ TEST_P(OurPlannerOnTask, EverySeedSolvesWithAValidPath) {
     const TaskPlanningResult result = plan(seed);
     ASSERT_TRUE(result.statistics.solved()) << "seed " << seed << ": " << plannerStatusName(result.status);
     const PathValidation validation =
-        validateTaskPath(checking_->exact(), segments, task_, result.path, result.closingFrom);
+        GraspRule(task_).validatePath(checking_->exact(), segments, result.path, PathPhases{result.closingFrom});
     EXPECT_TRUE(validation.valid) << "seed " << seed << ": "
                                   << (validation.problems.empty() ? "" : validation.problems.front());
     EXPECT_EQ(result.path.front(), task_.start);

@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "pmdplan/collision/collision_checking.hpp"
-#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
@@ -41,7 +41,7 @@ TEST_P(SequenceOnTask, EverySeedSolvesWithAValidPathAndRepeatsItself) {
     const TaskPlanningResult result = plan(task, checking, model, seed);
     ASSERT_TRUE(result.statistics.solved()) << "seed " << seed << ": " << plannerStatusName(result.status);
     const PathValidation validation =
-        validateTaskPath(checking.exact(), segments, task, result.path, result.closingFrom);
+        GraspRule(task).validatePath(checking.exact(), segments, result.path, PathPhases{result.closingFrom});
     EXPECT_TRUE(validation.valid) << "seed " << seed << ": "
                                   << (validation.problems.empty() ? "" : validation.problems.front());
     const TaskPlanningResult again = plan(task, checking, model, seed);

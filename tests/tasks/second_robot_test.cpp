@@ -13,7 +13,7 @@
 
 #include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
-#include "pmdplan/collision/path_validation.hpp"
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/model/forward_kinematics.hpp"
 #include "pmdplan/planning/task_planning.hpp"
@@ -186,7 +186,7 @@ TEST(SecondRobot, PmdSolvesEverySeedWithAValidPath) {
     ASSERT_TRUE(result.statistics.solved()) << "seed " << seed << ": " << plannerStatusName(result.status);
     EXPECT_FALSE(result.closingFrom) << "the goal touches nothing: no closing phase";
     const PathValidation validation =
-        validateTaskPath(checking.exact(), segments, task, result.path, result.closingFrom);
+        GraspRule(task).validatePath(checking.exact(), segments, result.path, PathPhases{result.closingFrom});
     EXPECT_TRUE(validation.valid) << "seed " << seed << ": "
                                   << (validation.problems.empty() ? "" : validation.problems.front());
     EXPECT_EQ(result.path.front(), task.start);

@@ -14,7 +14,7 @@ const BADGE_STYLE = 'position:absolute;top:10px;right:10px;padding:4px 10px;bord
 /// copies of the still state, no synergy readout or explorer of it (the live posture is not one of
 /// its states, and it would override the explorer's).
 function liveLayout() {
-  for (const id of ['play', 'timeline', 'state-label', 'clearance-label', 'synergy-panel', 'explorer-panel']) byId(id).hidden = true;
+  for (const id of ['play', 'timeline', 'state-label', 'clearance-label', 'validation-label', 'synergy-panel', 'explorer-panel']) byId(id).hidden = true;
   for (const [id, value] of [['ghost-mode', 'off'], ['show-ends', false], ['show-palm-trace', false]]) {
     const input = byId(id);
     if (typeof value === 'boolean') input.checked = value;

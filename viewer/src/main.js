@@ -112,7 +112,7 @@ function start(data) {
   const shown = () => paths.stateOf(0, player.state);
   const states = data.path.states;
   const plots = createJointPlots(data.path, data.robot);
-  const highlight = createCollisionHighlight(robot.object, data.path);
+  const highlight = createCollisionHighlight(robot.object, data.path, data.task.target);
 
   let explorerPosture = null;
   let player = null;
@@ -224,7 +224,10 @@ function start(data) {
     palmTracePoints: tracePoints,
     objectNames,
     collidingMeshes: () => highlight.collidingMeshes(),
+    contactMeshes: () => highlight.contactMeshes(),
     clearanceText: () => document.getElementById('clearance-label').textContent,
+    validationText: () => document.getElementById('validation-label').textContent,
+    closingFromState: data.path.closing_from_state ?? null,
     timed: Boolean(data.path.timing),
     duration: data.path.timing ? data.path.timing.duration : null,
     stateTime: (index) => (data.path.timing ? data.path.timing.times[index] : null),

@@ -1,6 +1,7 @@
 // The scene's objects by name with a legend: each obstacle's colour, whether it is the task's
 // target, a show / hide box and an opacity slider; and what the path's drawings mean.
 import { byId, element } from './dom.js';
+import { COLLISION_COLOUR, CONTACT_COLOUR } from './collision_highlight.js';
 
 function setOpacity(holder, opacity) {
   holder.traverse((child) => {
@@ -34,6 +35,7 @@ export function createObjectPanel(obstacles, task, view) {
     names.push(name);
   }
   byId('drawing-legend').replaceChildren(
-    swatch('#2e9e4f'), ' start  ', swatch('#c0392b'), ' goal  ', swatch('#7b3fa0'), ' palm trace  ', swatch('#5a7bb5'), ' ghosts');
+    swatch('#2e9e4f'), ' start  ', swatch('#c0392b'), ' goal  ', swatch('#7b3fa0'), ' palm trace  ', swatch('#5a7bb5'), ' ghosts  ',
+    swatch(COLLISION_COLOUR), ' in collision  ', swatch(CONTACT_COLOUR), ' grasp contact (allowed)');
   return names;
 }

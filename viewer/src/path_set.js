@@ -10,6 +10,7 @@ import { createRobot } from './robot_poser.js';
 import { createGhostTrail } from './ghost_trail.js';
 import { createPalmTrace } from './palm_trace.js';
 import { hiddenPathsFromUrl } from './url_state.js';
+import { stateText } from './collision_highlight.js';
 
 // Neither green nor red (the start and the goal) nor the robot's own orange.
 export const PATH_COLOURS = [0x3a6fc4, 0x9b4dca, 0x17a2a2, 0xd63384, 0x8a6d3b, 0x34495e];
@@ -58,12 +59,6 @@ function tint(object, material) {
   object.traverse((child) => { if (child.isMesh) child.material = material; });
 }
 
-function clearanceText(path, state) {
-  if (!path.clearance) return '';
-  const links = path.colliding_links[state] || [];
-  return links.length ? `in collision: ${links.join(', ')}` : `clearance ${(1000 * path.clearance[state]).toFixed(1)} mm`;
-}
-
 /// `primary`: the first path's {robot, ghosts, trace}, made by the page; `onVisibility` is called
 /// when a path is shown or hidden. Paths the address hides start hidden.
 export function createPathSet(view, data, primary, onVisibility = () => {}) {
@@ -94,7 +89,7 @@ export function createPathSet(view, data, primary, onVisibility = () => {}) {
     members.forEach((member, k) => {
       const state = timeline.stateOf(k, index);
       if (k > 0) member.robot.setConfiguration(member.path.states[state]);
-      if (cells[k]) cells[k].textContent = `state ${state + 1} of ${member.path.states.length} · ${clearanceText(member.path, state)}`;
+      if (cells[k]) cells[k].textContent = `state ${state + 1} of ${member.path.states.length} · ${stateText(member.path, state, data.task.target)}`;
     });
   };
   const applyVisibility = (member) => {

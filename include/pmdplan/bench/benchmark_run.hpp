@@ -4,8 +4,12 @@
 // Smoothing: our planners smooth inside solve() (Sect. 5.3). An OMPL planner's path gets the very
 // same smoothing afterwards: smoothPath over all of the path's states with the same
 // MotionValidator, timed as its smoothing time; OMPL's own simplifier is not used.
-// Validation: every returned path, ours too, is checked again by validatePath on a separate exact
-// checker at the same tolerance; an invalid path is a failure, never a success.
+// Grasp goals (docs/grasp_goals.md): every planner plans the approach to the pre-grasp as `plan`
+// does (task_planning.hpp: taskApproach, appendClosing), an OMPL planner's smoothed approach then
+// ends with the closing segment.
+// Validation: every returned path, ours too, is checked again by the grasp rule
+// (GraspRule::validatePath, its phases honoured) on a separate exact checker at the same
+// tolerance; an invalid path is a failure, never a success.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -27,8 +31,8 @@ RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run,
 
 /// Validates the solved run's path and measures it into `record` (the time to certify its approach
 /// with the bench's motion checker, path nodes, length, human-likeness, valid); an invalid path sets `failure` to the
-/// validation's first problem. A grasp path's closing phase (from point `closingFrom`) is validated with the grasp
-/// rule.
+/// validation's first problem. A grasp path's closing phase (from point `closingFrom`) is validated with hand-target
+/// contact allowed.
 void assessPath(TaskBench& bench, const std::vector<Configuration>& path, RunRecord& record,
                 std::optional<std::size_t> closingFrom = {});
 

@@ -21,7 +21,8 @@ namespace pmdplan {
 class TaskBench {
  public:
   /// `synergies` is borrowed and must outlive this object; `synergyFile` names it in errors.
-  /// Throws InputError if the model's joints are not the robot's or the start or goal collides.
+  /// Throws InputError if the model's joints are not the robot's, or plan would refuse the task's
+  /// start or goal (grasp_rule.hpp: a goal may grasp its target; planning/grasp_approach.hpp).
   TaskBench(Task task, CheckerKind checker, double toleranceMetres, const SynergyModel& synergies,
             const std::string& synergyFile);
   TaskBench(const TaskBench&) = delete;

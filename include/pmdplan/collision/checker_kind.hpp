@@ -1,6 +1,7 @@
 #pragma once
-// Which collision checker a planner runs on: the exact FCL reference, or the fast convex-part
-// checker (capsules and boxes screened in SIMD lanes) whose answers equal it (flagged pairs confirmed by FCL).
+// Which collision checker a planner runs on: the exact checker, or the fast convex-part checker
+// (capsules and boxes screened in SIMD lanes) whose answers equal it (flagged pairs confirmed by
+// the exact one).
 #include <optional>
 #include <string>
 #include <string_view>

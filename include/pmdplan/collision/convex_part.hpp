@@ -1,19 +1,23 @@
 #pragma once
-// The convex solids the fast checker reasons about, in plain numbers (no Eigen in the inner loops;
+// The convex solids the checkers reason about, in plain numbers (no Eigen in the inner loops;
 // Eigen types built with other vector flags would misalign against Debian's FCL): capsules (a
-// sphere is a capsule with both ends equal), boxes and cylinders. A capsule is its core segment swept by a ball; boxes
-// and cylinders are their own core (radius 0). Distances between parts come from the cores (fast/convex_distance.hpp)
+// sphere is a capsule with both ends equal), boxes and cylinders, and the triangles of meshes
+// (the exact checker's own route for a mesh against a primitive, primitive_contact.hpp; the fast
+// checker never holds one). A capsule is its core segment swept by a ball; boxes, cylinders and
+// triangles are their own core (radius 0). Distances between parts come from the cores (fast/convex_distance.hpp)
 // minus the radii.
 #include <cstdint>
 
 namespace pmdplan {
 
 struct ConvexPart {
-  enum class Kind : std::uint8_t { Capsule, Box, Cylinder };
+  enum class Kind : std::uint8_t { Capsule, Box, Cylinder, Triangle };
   Kind kind = Kind::Capsule;
-  /// Capsule: its core segment a-b. Box and cylinder: the centre in `a` (b unused).
+  /// Capsule: its core segment a-b. Box and cylinder: the centre in `a` (b unused). Triangle: its
+  /// corners a, b, c.
   double a[3] = {0, 0, 0};
   double b[3] = {0, 0, 0};
+  double c[3] = {0, 0, 0};
   /// Box and cylinder: rotation, row-major, local -> frame (its columns are the local axes; a
   /// cylinder's axis is local z).
   double axes[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -38,6 +42,7 @@ ConvexPart capsulePart(const double* a, const double* b, double radius);
 /// `pose`: row-major rotation (9) then translation (3), as BatchedForwardKinematics writes poses.
 ConvexPart boxPart(const double* pose, const double* halfExtents);
 ConvexPart cylinderPart(const double* pose, double radius, double halfLength);
+ConvexPart trianglePart(const double* a, const double* b, const double* c);
 
 /// `local` moved by `pose` (12 values as above) into `world`.
 void placePart(const ConvexPart& local, const double* pose, ConvexPart& world);
@@ -47,7 +52,7 @@ void coreSupport(const ConvexPart& part, const double* direction, double* point)
 
 /// The part made smaller by `amount` on every side (its core shrunk, or its radius reduced), so
 /// that the shrunk part grown by a ball of that radius lies in the original. False if the part is
-/// too thin to shrink that much.
+/// too thin to shrink that much (a triangle always is).
 bool shrinkPart(const ConvexPart& part, double amount, ConvexPart& shrunk);
 
 }  // namespace pmdplan

@@ -1,10 +1,13 @@
 #pragma once
-// The exact reference checker on FCL: self-collision over the enabled link pairs and collision of
-// every link with the task's static obstacles. Primitives use FCL's analytic routines or its
-// independent GJK (GST_INDEP; the libccd default gives wrong box-capsule and box-box answers in
-// FCL 0.7); meshes are their triangles to FCL, and where FCL finds no triangle touching, geometry
-// wholly inside a closed mesh collides with it too (a winding-number test), so that meshes are
-// solids like the primitives.
+// The exact checker, the independent certifier (validate, check, view): self-collision over the
+// enabled link pairs and collision of every link with the task's static obstacles. Two primitives
+// (box, cylinder, sphere, a URDF capsule) take our own route, closed forms or GJK with proven
+// bounds, that calls them touching unless it proves them apart (primitive_contact.hpp: FCL 0.7
+// calls some box-cylinder and box-capsule penetrations free). A mesh against a primitive is its
+// triangles, each tested the same way (mesh_part_contact.hpp); two meshes go to FCL, triangle
+// against triangle (GST_INDEP; the libccd default gives wrong answers in FCL 0.7). Where no
+// triangle touches, geometry wholly inside a closed mesh collides with it too (a winding-number
+// test), so that meshes are solids like the primitives.
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,7 +21,8 @@
 namespace pmdplan {
 
 /// How far the robot is from an obstacle: the smallest distance, or when they overlap minus the
-/// deepest penetration (FCL's contact depth), with the link and obstacle it was found for.
+/// deepest penetration (a lower bound on it, primitive_contact.hpp; FCL's for meshes), with the
+/// link and obstacle it was found for.
 struct Clearance {
   double metres = 0.0;
   CollisionPair pair;
@@ -60,6 +64,8 @@ class ExactCollisionChecker : public StateValidator {
  private:
   struct Geometry;
   bool selfCollides(const LinkPoses& poses, bool armOnly, CollisionReport* report) const;
+  /// Signed distance of the link (posed in poses_) from obstacle `o`.
+  double linkObstacleDistance(int link, std::size_t o) const;
   bool environmentCollides(const LinkPoses& poses, CollisionReport* report) const;
 
   const Task& task_;

@@ -1,14 +1,13 @@
 #pragma once
-// The grasp rule (docs/grasp_goals.md): a task's goal may touch the task's target, and only with
-// the hand. While the hand closes on the target (the closing phase of a path) contact between a
-// hand link (the palm and every link below it) and the target is allowed, like MoveIt's allowed
-// collision matrix during a grasp; every other pair counts as always, the target included for
-// arm links.
+// The grasp rule's contact part (docs/grasp_goals.md): which links are the hand's (the palm and
+// every link below it) and which obstacle is the task's target. While the hand closes on the
+// target (the closing phase of a path) contact between a hand link and the target is allowed, like
+// MoveIt's allowed collision matrix during a grasp. Where the rule applies, and what it decides
+// for states, goals and paths, is grasp_rule.hpp's.
 #include <set>
 #include <string>
 
 #include "pmdplan/collision/collision_report.hpp"
-#include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan {
@@ -25,27 +24,12 @@ class GraspContactRule {
   bool allows(const CollisionPair& pair) const;
   /// The pairs of `report` the rule does not allow (still sorted).
   CollisionReport forbidden(const CollisionReport& report) const;
+  /// The pairs of `report` the rule allows (still sorted).
+  CollisionReport allowed(const CollisionReport& report) const;
 
  private:
   std::string target_;
   std::set<std::string> handLinks_;
 };
-
-enum class GoalContact {
-  Free,          ///< touches nothing: plan to it directly
-  GraspsTarget,  ///< only hand links touch, and only the target: approach, then close
-  Refused,       ///< touches something else (or the task has no target)
-};
-
-struct GoalContactReport {
-  GoalContact contact = GoalContact::Free;
-  CollisionReport pairs;  ///< the hand-target pairs (GraspsTarget) or the pairs the rule forbids (Refused)
-};
-
-GoalContactReport classifyGoal(ExactCollisionChecker& checker, const Task& task);
-
-/// classifyGoal that refuses: throws InputError(task file, "goal") naming the pairs when the goal
-/// touches anything but the target with the hand.
-GoalContact requirePlannableGoal(ExactCollisionChecker& checker, const Task& task);
 
 }  // namespace pmdplan

@@ -1,6 +1,6 @@
 #pragma once
 // The robot's and the task's collision geometry as convex parts for the fast checker, equal to what
-// the exact checker gives FCL: a URDF cylinder with a sphere of its radius on each cap centre
+// the exact checker tests: a URDF cylinder with a sphere of its radius on each cap centre
 // (how URDF spells a capsule) is that capsule, a sphere inside such a capsule adds nothing and is
 // dropped, other spheres are point capsules, boxes and cylinders stay as they are. A mesh (of a
 // link or an obstacle) is stood in for by its enclosure (mesh_enclosure.hpp: the smallest box,

@@ -1,7 +1,9 @@
 #pragma once
 // An independent check of a planned path with the exact checker: every point within the limits
 // and free, the ends equal to the task's start and goal, every segment free at the tolerance. A
-// grasp path's closing phase is checked with the grasp rule (grasp_contact.hpp).
+// grasp path's closing phase is checked with the grasp rule's contact part (grasp_contact.hpp).
+// Against a task, with the path file's phases, paths are judged through GraspRule::validatePath
+// (grasp_rule.hpp), which every command, the Python module, the benchmarks and the viewer use.
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,15 +30,10 @@ struct ClosingPhase {
   const GraspContactRule* rule = nullptr;
 };
 
-/// Before `closing->from` (or everywhere without it) every pair counts.
+/// Before `closing->from` (or everywhere without it) every pair counts. A path's problems name the
+/// segment, its phase and the pairs at its first colliding state.
 PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker& segments,
                             const std::vector<Configuration>& path, const Configuration& start,
                             const Configuration& goal, std::optional<ClosingPhase> closing = {});
-
-/// validatePath against a task: a path whose closing phase starts at point `closingFrom` (the path
-/// file's phases) is checked with the rule of the task's target; a task without a target makes
-/// such a path invalid.
-PathValidation validateTaskPath(ExactCollisionChecker& checker, const SegmentChecker& segments, const Task& task,
-                                const std::vector<Configuration>& path, std::optional<std::size_t> closingFrom);
 
 }  // namespace pmdplan

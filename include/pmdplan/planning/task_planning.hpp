@@ -4,6 +4,8 @@
 // benchmarks. A goal that grasps the task's target is planned in two phases (grasp_approach.hpp):
 // the roadmap planner's path to the pre-grasp (the approach), then the closing segment to the goal.
 // The lazy and the bidirectional planners are wired the same way; the progress callback is the paper planner's only.
+// taskApproach and appendClosing are the two phases' wiring on their own, for planners of other
+// families (OMPL's, src/bench/) to plan a grasp goal exactly as planTask does.
 #include <optional>
 #include <vector>
 
@@ -37,6 +39,25 @@ struct TaskPlanningResult {
   std::optional<GraspApproach> grasp;      ///< set when the goal grasps the target
   std::optional<std::size_t> closingFrom;  ///< the pre-grasp's index in `path` (closing phase from there)
 };
+
+/// Where a task's approach ends: the pre-grasp of a grasp goal (found as graspApproach finds it, at
+/// the checks' tolerance) or the goal itself.
+struct TaskApproach {
+  std::optional<GraspApproach> grasp;
+  /// The pre-grasp search's wall time, which counts in the planning time (0 without a grasp).
+  double seconds = 0.0;
+
+  const Configuration& end(const Task& task) const { return grasp ? grasp->pregrasp : task.goal; }
+};
+
+/// Throws InputError as graspApproach does.
+TaskApproach taskApproach(const Task& task, CollisionChecking& checking, const GraspSettings& settings);
+
+/// Ends a solved approach path (start to approach.end()) with the closing: appends the goal and
+/// returns the pre-grasp's index, where the closing phase starts; without a grasp, nullopt and
+/// the path unchanged.
+std::optional<std::size_t> appendClosing(const Task& task, const TaskApproach& approach,
+                                         std::vector<Configuration>& path);
 
 /// `checking` must have been built for `task`; its tolerance is the motion checks' resolution.
 /// Throws InputError for a model that does not fit the robot's hand (field as the sampler names

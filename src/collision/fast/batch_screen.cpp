@@ -190,6 +190,8 @@ template <class V>
       case ConvexPart::Kind::Cylinder:
         screenObstacleOf<ConvexPart::Kind::Cylinder, V>(o, first, tight);
         break;
+      case ConvexPart::Kind::Triangle:
+        break;  // only the exact checker's mesh route holds triangles
     }
 
   // (2) Parts.

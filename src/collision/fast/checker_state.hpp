@@ -20,8 +20,8 @@ namespace pmdplan::fast {
 struct CheckerState {
   static constexpr int kLanes = BatchedForwardKinematics::kLanes;
 
-  /// EnclosuresOverlap: like Uncertain (FCL decides), with a mesh's enclosure overlapping the
-  /// other side by more than the band, so FCL is asked about it first.
+  /// EnclosuresOverlap: like Uncertain (the exact checker decides), with a mesh's enclosure overlapping the
+  /// other side by more than the band, so the exact checker is asked about it first.
   enum class Outcome { Apart, Overlapping, Uncertain, EnclosuresOverlap };
   /// A pair not proven apart: self (two links) or a link and an obstacle.
   struct Flag {
@@ -68,7 +68,7 @@ struct CheckerState {
   const ConvexPart* placedBounds(int link);
   /// Part `index` of the link, all of it placed (placedBounds first).
   const ConvexPart& placedPart(int link, std::size_t index);
-  /// FCL on the pairs in uncertain_ at q: is q free?
+  /// The exact checker on the pairs in uncertain_ at q: is q free?
   bool confirmUncertain(const Configuration& q);
 
   // The batch screen (batch_screen.cpp): kLanes configurations at once. With `stopAt`, the lanes

@@ -106,7 +106,10 @@ bool closestOnTetrahedron(Simplex& s, Vec& closest) {
   const Vec a = s.p[0], b = s.p[1], c = s.p[2], d = s.p[3];
   const int faces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
   const double volume = dot(b - a, cross(c - a, d - a));
-  const bool flat = std::abs(volume) <= 1e-30;
+  // Flat relative to its size: the side tests below mean nothing for a sliver (a tetrahedron of
+  // near-parallel support points once claimed a box 0.5 mm from another to meet it).
+  const double scale = std::max({dot(b - a, b - a), dot(c - a, c - a), dot(d - a, d - a)});
+  const bool flat = std::abs(volume) <= 1e-9 * scale * std::sqrt(scale) || std::abs(volume) <= 1e-30;
   double bestNorm = INFINITY;
   Simplex best;
   bool outside = false;
@@ -288,6 +291,8 @@ PMDPLAN_AVX2_CLONES void sphereGaps(const ConvexPart& part, const double* x, con
       return gapsOf<ConvexPart::Kind::Box>(part, x, y, z, r, count, gaps);
     case ConvexPart::Kind::Cylinder:
       return gapsOf<ConvexPart::Kind::Cylinder>(part, x, y, z, r, count, gaps);
+    case ConvexPart::Kind::Triangle:
+      break;  // only the exact checker's mesh route holds triangles
   }
 }
 

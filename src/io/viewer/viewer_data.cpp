@@ -4,8 +4,10 @@
 #include <cmath>
 #include <type_traits>
 
+#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/io/files/path_validation_json.hpp"
 #include "pmdplan/io/files/statistics_json.hpp"
 #include "pmdplan/io/viewer/path_robot_match.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
@@ -211,19 +213,32 @@ ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesys
                      {"waypoint_states", result.timeline.waypointStates},
                      {"timing", std::move(timing)}};
   result.warnings = pathEndWarnings(task, waypoints);
-  Json clearance = Json::array(), colliding = Json::array();
+  // The path's phases (a grasp's closing) as the timeline's: its closing starts at the pre-grasp's state.
+  const PathPhases phases{path.closingFrom};
+  const PathPhases statePhases{phases.closingFrom
+                                   ? std::optional<std::size_t>(result.timeline.waypointStates.at(*phases.closingFrom))
+                                   : std::nullopt};
+  Json clearance = Json::array(), colliding = Json::array(), contact = Json::array(), validation;
   try {
-    for (const StateClearance& state : stateClearances(task, result.timeline.states)) {
+    for (const StateClearance& state : stateClearances(task, result.timeline.states, statePhases)) {
       clearance.push_back(state.clearance);
       colliding.push_back(state.collidingLinks);
+      contact.push_back(state.contactLinks);
     }
+    ExactCollisionChecker checker(task);
+    const SegmentChecker segments(checker, robot, parameters.toleranceMm / 1000.0);
+    validation = pathValidationJson(GraspRule(task).validatePath(checker, segments, waypoints, phases), phases,
+                                    parameters.toleranceMm);
   } catch (const InputError& error) {
     // Geometry the checker cannot load (an empty mesh, ...): the page still shows the path.
-    clearance = colliding = Json();
+    clearance = colliding = contact = validation = Json();
     result.warnings.push_back("no collisions or clearance shown: " + error.file() + ": " + error.message());
   }
   result.json["clearance"] = std::move(clearance);
   result.json["colliding_links"] = std::move(colliding);
+  result.json["contact_links"] = std::move(contact);
+  result.json["closing_from_state"] = statePhases.closingFrom ? Json(*statePhases.closingFrom) : Json();
+  result.json["validation"] = std::move(validation);
   return result;
 }
 

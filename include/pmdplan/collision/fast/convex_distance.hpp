@@ -6,7 +6,7 @@
 //    simplex, a point of the Minkowski difference) on their distance;
 //  - partContact: whether two parts are certainly apart (with a lower bound on the gap), certainly
 //    overlapping by more than `band`, or too close to call — the only case the caller has to hand
-//    to the exact FCL checker, whose own tolerances are far below `band`.
+//    to the exact checker, whose own margins are far below `band`.
 #include <cstdint>
 
 #include "pmdplan/collision/convex_part.hpp"
@@ -41,9 +41,9 @@ CoreDistance coreDistance(const ConvexPart& a, const ConvexPart& b, double radii
                           double relativePrecision = 0.05);
 
 enum class Contact : std::uint8_t {
-  Apart,        ///< gap > band: FCL finds no contact
-  Overlapping,  ///< interpenetrating by more than band: FCL finds the contact
-  Uncertain,    ///< within band of touching: ask FCL
+  Apart,        ///< gap > band: the exact checker finds no contact
+  Overlapping,  ///< interpenetrating by more than band: the exact checker finds it
+  Uncertain,    ///< within band of touching: ask the exact checker
 };
 
 struct PartContact {

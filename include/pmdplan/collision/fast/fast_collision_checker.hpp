@@ -8,10 +8,10 @@
 // branch-free passes; the pairs whose spheres meet go to the narrow phase, part against part
 // (partContact: closed form for two capsules, GJK otherwise), which proves them apart (with a lower
 // bound on the gap) or overlapping by more than `band`. Only a pair within `band` of touching, or a
-// mesh not proven apart, is handed to FCL (ExactCollisionChecker::linkPairCollides /
-// linkObstacleCollides) — so every answer equals the exact checker's while FCL runs on almost no
+// mesh not proven apart, is handed to the exact checker (ExactCollisionChecker::linkPairCollides /
+// linkObstacleCollides) — so every answer equals the exact checker's while it runs on almost no
 // checks. Pairs that no joint moves (links fixed to the base, static obstacles) are decided once,
-// by FCL. The stages and their scratch live in src/collision/fast/ (checker_state.hpp).
+// by the exact checker. The stages and their scratch live in src/collision/fast/ (checker_state.hpp).
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -29,8 +29,9 @@ namespace pmdplan {
 class FastCollisionChecker : public StateValidator {
  public:
   static constexpr int kLanes = BatchedForwardKinematics::kLanes;
-  /// Parts closer than this (m) to touching, or interpenetrating by less, are left to FCL: far
-  /// above FCL's own tolerances (about 1e-6 m) and far below anything a plan could notice.
+  /// Parts closer than this (m) to touching, or interpenetrating by less, are left to the exact
+  /// checker: far above its numerical margins (about 1e-9 m) and far below anything a plan could
+  /// notice.
   static constexpr double kDefaultBand = 2e-5;
 
   /// `exact` must be built on the same task and outlive this checker; its check count is not
@@ -57,7 +58,7 @@ class FastCollisionChecker : public StateValidator {
   /// safe[i] > 0 when the geometric stages alone proved it free: ScreenResult's safeDisplacement,
   /// or after setMotion the fraction of that segment by which the robot may move from this state
   /// with every pair staying apart. With `pairGaps` (count x pairCount() values), the gap of every
-  /// pair of every valid configuration is written there too (0 for a pair only FCL could clear).
+  /// pair of every valid configuration is written there too (0 for a pair only the exact checker could clear).
   /// Counts `count` checks.
   void checkBatch(const Configuration* const* configurations, int count, bool* valid, double* safe,
                   double* pairGaps = nullptr);

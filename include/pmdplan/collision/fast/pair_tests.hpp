@@ -16,8 +16,8 @@ class PairTests {
   std::size_t pairCount() const;
   /// Forward kinematics of q for test of the given pairs only (not counted as a check).
   void pose(const Configuration& q, const std::size_t* pairs, std::size_t count);
-  /// Pair `pair` at the posed state: a lower bound on its gap (m), 0 if only FCL could clear it
-  /// (and FCL did), -1 if it collides.
+  /// Pair `pair` at the posed state: a lower bound on its gap (m), 0 if only the exact checker
+  /// could clear it (and did), -1 if it collides.
   double test(std::size_t pair);
   /// After FastCollisionChecker::setMotion: 1 / (how far, in m, the pair's two sides may approach
   /// each other over the whole segment), so gap * share is the fraction of the segment it stays

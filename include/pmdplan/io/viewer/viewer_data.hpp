@@ -11,9 +11,16 @@
 //              rad), hand_joints, mimic: {joint: [source, multiplier, offset]}}
 //   path      {planner, seed, statistics, waypoint_count, state_spacing, states: [[rad ...]],
 //              waypoint_states: [state index of each waypoint],
-//              clearance: [m per state: the moving links' distance to the obstacles],
-//              colliding_links: [[link names] per state: the exact checker's colliding pairs]
-//              (both null, with a warning, when the checker cannot load the task's geometry),
+//              closing_from_state: the state where a grasp path's closing phase starts (its
+//                pre-grasp), or null; every later state is judged with hand-target contact allowed,
+//              clearance: [m per state: the moving links' distance to the obstacles over the pairs
+//                that count in the state's phase; while closing, not the hand's to the target],
+//              colliding_links: [[link names] per state: links in colliding pairs that count],
+//              contact_links: [[link names] per state: hand links in allowed grasp contact with the
+//                target (closing phase only)],
+//              validation: the path judged as `pmdplan validate --json` judges it
+//                (io/files/path_validation_json.hpp), at `ViewerDataParameters::toleranceMm`
+//              (the last four null, with a warning, when the checker cannot load the task's geometry),
 //              timing: null, or for a timed trajectory {duration, blend_tolerance, velocity_limits,
 //                      acceleration_limits, times: [s per state], velocities: [[rad/s ...]]}}
 //   overlay_paths  only when several paths are viewed together (path_set.hpp): the second and
@@ -25,7 +32,8 @@
 //             or null when the robot has no synergy model
 //
 // The numbers are those of the library (the viewer recomputes nothing it could get wrong): the
-// states are the path timeline, the readout comes from synergyReadout() for every state.
+// states are the path timeline, the readout comes from synergyReadout() for every state, the
+// collisions, grasp contact, clearance and validation from the grasp rule (collision/grasp_rule.hpp).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -52,6 +60,8 @@ struct ViewerDataParameters {
   /// A timed trajectory (the viewer plays it in real time): its points are the states, and the
   /// path given to viewerData() is trajectoryAsPathFile() of it. Null for a path file.
   const TrajectoryFile* trajectory = nullptr;
+  /// The motion tolerance of the path's validation (mm), as `pmdplan validate --tolerance-mm`.
+  double toleranceMm = 1.0;
 };
 
 /// A path's ends farther than this (rad, any joint) from the task's start and goal are not its ends.
