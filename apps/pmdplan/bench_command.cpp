@@ -27,6 +27,7 @@
 #include "pmdplan/bench/results_csv.hpp"
 #include "pmdplan/bench/results_markdown.hpp"
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/core/progress_line.hpp"
 
@@ -99,10 +100,29 @@ std::string hostName() {
   return name;
 }
 
+/// The OMPL log of the i-th task: named after the task as the command line gives it (a task file by
+/// its file name), never after the name inside the file.
+std::filesystem::path omplLogFile(const BenchOptions& o, std::size_t i) {
+  return omplLogPathForTask(o.omplLog, resolveTaskPath(o.tasks[i]).stem().string(), o.tasks.size());
+}
+
+/// Once the inputs are read (the tasks, their robots' files, the synergy models), before the runs:
+/// no output may be one of them or another output (core/command_files.hpp).
+void checkOutputsAgainstInputs(const BenchOptions& o) {
+  const std::pair<const std::filesystem::path*, const char*> outputs[] = {
+      {&o.csv, "--csv"}, {&o.markdown, "--markdown"}, {&o.plot, "--plot"}};
+  for (const auto& [path, option] : outputs)
+    if (!path->empty()) checkOutputPath(*path, option);
+  if (!o.omplLog.empty())
+    for (std::size_t i = 0; i < o.tasks.size(); ++i)
+      checkOutputPath(omplLogFile(o, i), o.tasks.size() > 1 ? "--ompl-log for " + o.tasks[i] : "--ompl-log");
+}
+
 /// `taskNames`: the tasks' own names (a task given as a file is known by the name inside it).
 void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNames,
                   const std::vector<RunRecord>& records, const std::string& markdown, const std::string& started,
                   double totalSeconds, int ranks) {
+  StagedOutputs staged;  // renamed together once every output is written
   if (!o.csv.empty()) writeFileAtomically(o.csv, runRecordsCsv(records));
   if (!o.markdown.empty()) writeFileAtomically(o.markdown, markdown);
   if (!o.plot.empty()) writeFileAtomically(o.plot, planningTimeBoxPlotSvg(records, taskNames, o.planners, o.timeLimit));
@@ -113,12 +133,12 @@ void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNam
         "pmdplan bench: checker %s, tolerance %g mm, %d rank(s); paths smoothed by pmdplan's shortcut smoothing "
         "(Sect. 5.3) and re-validated by the exact checker",
         checkerKindName(o.checker).c_str(), o.toleranceMetres * 1000.0, ranks);
-    for (const std::string& task : taskNames) {
+    for (std::size_t i = 0; i < taskNames.size(); ++i) {
       const OmplLogContext context{hostName(), started, setup, o.seed, o.timeLimit, o.runs, totalSeconds};
-      writeFileAtomically(omplLogPathForTask(o.omplLog, task, taskNames.size()),
-                          omplBenchmarkLog(records, task, o.planners, context));
+      writeFileAtomically(omplLogFile(o, i), omplBenchmarkLog(records, taskNames[i], o.planners, context));
     }
   }
+  staged.commit();
 }
 
 /// The tasks' own names (a task given as a file is known by the name inside it).
@@ -149,6 +169,7 @@ int run(const CommandLine& c) {
   const BenchOptions o = benchOptions(c);
   CampaignRanks ranks;
   CampaignInputs inputs = loadCampaignInputs(o);
+  checkOutputsAgainstInputs(o);
   if (o.reportOnly) return ranks.first() ? report(o, inputs) : 0;
   const std::string started = utcNow();
   const auto began = std::chrono::steady_clock::now();
@@ -194,7 +215,8 @@ const CommandRegistrar registrar{
                      "Comma-separated planners whose every run must solve with a valid path (else exit 1)");
       app.add_option("--csv", c->csv, "Write every run as a CSV row");
       app.add_option("--markdown", c->markdown, "Write the tables as Markdown");
-      app.add_option("--ompl-log", c->omplLog, "Write OMPL benchmark logs (one per task: NAME.TASK.log when several)");
+      app.add_option("--ompl-log", c->omplLog,
+                     "Write OMPL benchmark logs (one per task: NAME.TASK.log when several, TASK the task file's name)");
       app.add_option("--plot", c->plot, "Write the planning-time box plot (SVG)");
       app.add_option(
           "--paths", c->paths,

@@ -14,6 +14,7 @@
 #include "package_path_option.hpp"
 #include "pmdplan/collision/exact_collision_checker.hpp"
 #include "pmdplan/collision/grasp_rule.hpp"
+#include "pmdplan/collision/path_validation.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
@@ -114,6 +115,11 @@ int run(const Options& o) {
   const Task task = loadTaskByName(o.task);
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
+  try {  // the straight segment's states, bounded as validate's (collision/path_validation.hpp)
+    checkValidationWork(segments, {task.start, task.goal});
+  } catch (const InputError& e) {
+    throw InputError(o.task, "start, goal", e.message());
+  }
   const auto start = configurationJson(checker, task.start);
   auto goal = configurationJson(checker, task.goal);
   const nlohmann::json plan = planVerdict(checker, task, o.toleranceMm / 1000.0, grasp, goal);

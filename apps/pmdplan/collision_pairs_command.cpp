@@ -8,6 +8,7 @@
 #include "package_path_option.hpp"
 #include "pmdplan/collision/skippable_pairs.hpp"
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/command_files.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "robot_setup.hpp"
@@ -37,6 +38,10 @@ int run(const Options& o) {
   // Groups and the palm link from the existing file; its disabled pairs are ignored here by
   // reading it into a model whose pairs we then recompute from scratch.
   const RobotModel withGroups = RobotModel::load(urdf, srdf);
+  // The SRDF is regenerated in place by default; any other input (the URDF, a mesh) is refused.
+  permitReplacingInput(srdf);
+  const std::filesystem::path out = o.output.empty() ? srdf : std::filesystem::path(o.output);
+  checkOutputPath(out, "-o");
   const RobotModel model = loadWithCompanionText(urdf, companionFileText(withGroups, {}, "groups only"));
   SkippablePairParams params = o.params;
   params.home = homeConfiguration(model, o.home);
@@ -47,7 +52,6 @@ int run(const Options& o) {
                             " samples, seed " + std::to_string(params.seed) +
                             "): Adjacent pairs, pairs in contact at the home pose (Default), in every sample "
                             "(Always) or in none (Never).");
-  const std::filesystem::path out = o.output.empty() ? srdf : std::filesystem::path(o.output);
   writeFileAtomically(out, text);
   std::map<std::string, std::size_t> byReason;
   for (const auto& p : pairs) ++byReason[p.reason];
@@ -66,7 +70,7 @@ const CommandRegistrar registrar{
       app.add_option("robot", o->robot, "Built-in robot name or a .urdf path (its .srdf beside it holds the groups)");
       app.add_option("-o,--output", o->output, "Where to write (default: the robot's .srdf)");
       app.add_option("--samples", o->params.samples, "Configurations sampled over the whole joint box")
-          ->check(CLI::PositiveNumber);
+          ->check(wholeNumberFrom(1, 10'000'000));
       app.add_option("--seed", o->params.seed, "Random seed (a whole number >= 0)")->check(wholeNumber());
       app.add_option(
           "--home", o->home,

@@ -30,6 +30,21 @@ inline CLI::Validator wholeNumber() {
       "UINT");
 }
 
+/// A whole number from `lowest` to `highest`, said in those words (CLI::PositiveNumber printed its
+/// range as a 309-digit number).
+inline CLI::Validator wholeNumberFrom(long long lowest, long long highest) {
+  return CLI::Validator(
+      [lowest, highest](const std::string& text) {
+        const std::string expected =
+            "expected a whole number from " + std::to_string(lowest) + " to " + std::to_string(highest);
+        if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
+          return expected;
+        const long long value = std::stoll(text);
+        return value >= lowest && value <= highest ? std::string() : expected;
+      },
+      "UINT");
+}
+
 struct CommandRegistrar {
   CommandRegistrar(std::string name, std::string description, CommandSetup setup) {
     commandRegistry().push_back({std::move(name), std::move(description), std::move(setup)});

@@ -44,18 +44,22 @@ int runSynth(const SynthOptions& o) {
     throw InputError("", "-o", "the synthetic recording is written as CSV: give a .csv file name");
   const std::filesystem::path calibrationPath =
       o.calibrationOutput.empty() ? calibrationBeside(output) : std::filesystem::path(o.calibrationOutput);
-  checkOutputPath(output, "-o", {o.mapping});
-  checkOutputPath(calibrationPath, "--calibration-out", {o.mapping, output});
+  checkOutputPath(output, "-o", {o.mapping});  // a bad output fails before the inputs are read
+  checkOutputPath(calibrationPath, "--calibration-out", {o.mapping});
   const HandMapping mapping =
       loadHandMapping(o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping));
+  const JointLimits hand = RobotModel::loadByNameOrPath(o.robot).groupJoints("hand");
+  checkOutputPath(output, "-o");  // again, against the mapping and the robot's files now read
+  checkOutputPath(calibrationPath, "--calibration-out");
   SyntheticOperatorParameters parameters;
   parameters.frames = o.frames;
   parameters.seed = o.seed;
-  SyntheticGloveSession session =
-      synthesiseGloveSession(parameters, mapping, RobotModel::loadByNameOrPath(o.robot).groupJoints("hand"));
+  SyntheticGloveSession session = synthesiseGloveSession(parameters, mapping, hand);
   session.recording.notes.push_back("Calibration: " + calibrationPath.filename().string() + " (also synthetic).");
+  StagedOutputs staged;  // both files or neither
   writeFileAtomically(output, formatGloveCsv(session.recording));
   writeFileAtomically(calibrationPath, formatGloveCalibration(session.calibration));
+  staged.commit();
   std::cout << "wrote " << output.string() << ": " << o.frames << " SYNTHETIC glove frames (seed " << o.seed
             << ", not human data)\nwrote " << calibrationPath.string() << ": its synthetic calibration\n";
   return 0;

@@ -30,6 +30,7 @@
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/text/number_text.hpp"
 #include "pmdplan/world/task.hpp"
+#include "viewer_folder_outputs.hpp"
 
 namespace pmdplan::cli {
 namespace {
@@ -164,8 +165,9 @@ int runStream(const StreamOptions& o) {
   if (!o.output.empty() && !o.rawOutput.empty() &&
       std::filesystem::weakly_canonical(o.output) == std::filesystem::weakly_canonical(o.rawOutput))
     throw InputError(o.output, "--raw-out", "the posture recording (-o) and the raw one (--raw-out) must be two files");
-  if (!o.output.empty()) checkOutputPath(o.output, "-o", inputs);  // before the viewer folder is written
-  if (!o.rawOutput.empty()) checkOutputPath(o.rawOutput, "--raw-out", inputs);
+  // Before the viewer folder is written: every input is read, and no NAME.partial may be in the way.
+  if (!o.output.empty()) LiveCsvFile::checkTarget(o.output, "-o", inputs);
+  if (!o.rawOutput.empty()) LiveCsvFile::checkTarget(o.rawOutput, "--raw-out", inputs);
   std::unique_ptr<EventStreamServer> server;
   if (o.servePort) {
     const std::filesystem::path folder =
@@ -173,10 +175,10 @@ int runStream(const StreamOptions& o) {
         : !o.output.empty()
             ? std::filesystem::path(std::filesystem::path(o.output).replace_extension("").string() + "-viewer")
             : std::filesystem::path("glove-live-viewer");
-    writeViewerFolder(folder,
-                      liveViewerData(task, synergies ? &*synergies : nullptr, synergyFile, hand, source->description(),
-                                     o.projectPmds),
-                      viewerAssetDirectory());
+    const ViewerData page = liveViewerData(task, synergies ? &*synergies : nullptr, synergyFile, hand,
+                                           source->description(), o.projectPmds);
+    checkViewerFolderOutputs(folder, page, viewerAssetDirectory(), "--out");  // no file of it may be an input
+    writeViewerFolder(folder, page, viewerAssetDirectory());
     server = std::make_unique<EventStreamServer>(folder, *o.servePort);
     std::cout << "serving " << folder.string() << " at http://127.0.0.1:" << server->port()
               << "/ (live; Ctrl-C to stop)" << std::endl;

@@ -5,6 +5,8 @@
 #include <iostream>
 
 #include "command_registry.hpp"
+#include "option_error.hpp"
+#include "pmdplan/core/command_files.hpp"
 #include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan::cli {
@@ -35,10 +37,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::cerr << "pmdplan: error: " << optionErrorLine(e, app) << "\n";
+    return 2;
   }
   try {
+    const pmdplan::CommandFileScope files;  // no output may replace an input or another output
     for (auto& [command, action] : actions)
       if (command->parsed()) return action();
   } catch (const pmdplan::InputError& e) {

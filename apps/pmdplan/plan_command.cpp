@@ -60,10 +60,6 @@ int run(const Options& o) {
   const std::optional<HandSamplingMode> mode = planner->mode;
   checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
-  const std::filesystem::path output =
-      o.output.empty() ? std::filesystem::path(task.name + ".path.json") : std::filesystem::path(o.output);
-  checkOutputPath(output, "-o", {task.file, o.synergies});
-  if (!o.csv.empty()) checkOutputPath(o.csv, "--csv", {task.file, o.synergies, output});
   const auto checkerKind = parseCheckerKind(o.checker);
   if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
   const PlanningSpace space =
@@ -82,6 +78,18 @@ int run(const Options& o) {
     for (const int i : space.handIndices) handJoints.push_back(space.joints[static_cast<std::size_t>(i)].name);
     checkSynergyModelFitsHand(*synergies, handJoints, synergyFile.string());
   }
+  // Every output is checked once the inputs are read (the task's files, the synergy model, the
+  // joint limits), before the planning; the default name comes from the task file's name, never
+  // from its contents.
+  const std::filesystem::path output =
+      o.output.empty() ? std::filesystem::path(resolveTaskPath(o.task).stem().string() + ".path.json")
+                       : std::filesystem::path(o.output);
+  checkOutputPath(output, "-o", {task.file, o.synergies});
+  if (!o.csv.empty()) checkOutputPath(o.csv, "--csv", {task.file, o.synergies});
+  const std::filesystem::path trajectoryFile = !o.trajectory           ? std::filesystem::path()
+                                               : o.trajectory->empty() ? defaultTrajectoryFile(output)
+                                                                       : std::filesystem::path(*o.trajectory);
+  if (o.trajectory) checkTrajectoryOutputs(task, {}, trajectoryFile, "--trajectory");
   TaskPlanningOptions options;
   options.algorithm = planner->algorithm;
   options.mode = *mode;
@@ -110,12 +118,11 @@ int run(const Options& o) {
                   result.closingFrom,
                   mimicRelations(*task.robot),
                   stats};
+    StagedOutputs staged;  // renamed together once every output is written
     writePathFile(output, file);
     if (!o.csv.empty()) writePathCsv(o.csv, file.jointNames, file.points);
-    if (o.trajectory)
-      trajectorySummary = writeTimedTrajectory(
-          task, checking, file, {},
-          o.trajectory->empty() ? defaultTrajectoryFile(output) : std::filesystem::path(*o.trajectory));
+    if (o.trajectory) trajectorySummary = writeTimedTrajectory(task, checking, file, {}, trajectoryFile);
+    staged.commit();
   }
   if (o.json) {
     auto document = statisticsToJson(stats, true);
@@ -155,7 +162,7 @@ const CommandRegistrar registrar{
       app.add_option("--tolerance-mm", o->toleranceMm, "Motion check tolerance in millimetres");
       addPlannerSettingOptions(app, o->settings);
       addGraspOptions(app, o->grasp);
-      app.add_option("-o,--output", o->output, "Path file to write (default TASK.path.json)");
+      app.add_option("-o,--output", o->output, "Path file to write (default: TASK's file name with .path.json, here)");
       app.add_option("--csv", o->csv, "Also write the waypoints as CSV");
       std::string keys;
       for (const char* key : statisticsJsonKeys()) keys += (keys.empty() ? "" : ", ") + std::string(key);

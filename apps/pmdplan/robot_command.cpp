@@ -55,6 +55,11 @@ std::vector<std::string> checkedJoints(const RobotModel& model, const std::vecto
 int run(const Options& o) {
   const std::filesystem::path urdf = resolveResourcePath(o.urdf, std::filesystem::current_path() / "-", "URDF");
   const RobotModel bare = RobotModel::load(urdf);
+  // The output's name comes from the URDF file's name; it is checked against the URDF and its
+  // meshes before the sampling.
+  const std::filesystem::path out =
+      o.output.empty() ? std::filesystem::path(urdf).replace_extension(".srdf") : std::filesystem::path(o.output);
+  checkOutputPath(out, "-o");
   const int palm = bare.linkIndex(o.palm);
   if (palm < 0) throw InputError("", "--palm", "'" + o.palm + "' is not a link of " + urdf.string());
   std::vector<RobotModel::GroupDefinition> groups;
@@ -79,8 +84,6 @@ int run(const Options& o) {
                                                  " samples, seed " + std::to_string(params.seed) +
                                                  "): Adjacent pairs, pairs in contact at the home pose (Default), in "
                                                  "every sample (Always) or in none (Never).");
-  const std::filesystem::path out =
-      o.output.empty() ? std::filesystem::path(urdf).replace_extension(".srdf") : std::filesystem::path(o.output);
   writeFileAtomically(out, text);
 
   std::map<std::string, std::size_t> byReason;
@@ -128,7 +131,7 @@ const CommandRegistrar registrar{
           "Home pose JOINT=DEG,... (others at 0 or their nearest limit); pairs in contact there are skipped");
       init->add_option("-o,--output", o->output, "SRDF to write (default: the URDF's name with .srdf)");
       init->add_option("--samples", o->params.samples, "Configurations sampled over the whole joint box")
-          ->check(CLI::PositiveNumber);
+          ->check(wholeNumberFrom(1, 10'000'000));
       init->add_option("--seed", o->params.seed, "Random seed");
       return [o] { return run(*o); };
     }};

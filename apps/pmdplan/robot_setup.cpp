@@ -3,6 +3,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <numbers>
 #include <sstream>
 
@@ -12,15 +16,21 @@
 namespace pmdplan::cli {
 
 RobotModel loadWithCompanionText(const std::filesystem::path& urdf, const std::string& companionText) {
-  const auto scratch =
-      std::filesystem::temp_directory_path() / ("pmdplan-groups-" + std::to_string(::getpid()) + ".srdf");
-  writeFileAtomically(scratch, companionText);
+  // A private folder (mkdtemp: a fresh name, mode 0700), so that no one else can put a symbolic
+  // link where the scratch file goes.
+  std::error_code error;
+  std::string folder = (std::filesystem::temp_directory_path(error) / "pmdplan-groups-XXXXXX").string();
+  if (error) throw InputError("", "TMPDIR", "no folder for scratch files: " + error.message());
+  if (!::mkdtemp(folder.data()))
+    throw InputError(folder, "", std::string("cannot create a scratch folder: ") + std::strerror(errno));
+  const auto scratch = std::filesystem::path(folder) / "groups.srdf";
   try {
+    writeFileAtomically(scratch, companionText);
     RobotModel model = RobotModel::load(urdf, scratch);
-    std::filesystem::remove(scratch);
+    std::filesystem::remove_all(folder, error);
     return model;
   } catch (...) {
-    std::filesystem::remove(scratch);
+    std::filesystem::remove_all(folder, error);
     throw;
   }
 }
@@ -50,6 +60,10 @@ Configuration homeConfiguration(const RobotModel& model, const std::string& text
     } catch (const std::exception&) {
       throw InputError("", "--home", "'" + entry + "': expected a number of degrees after '='");
     }
+    // stod reads "nan" and "inf": a NaN passed the limits test below and changed which pairs the
+    // sampling skipped.
+    if (!std::isfinite(value))
+      throw InputError("", "--home", "'" + entry + "': expected a finite number of degrees for joint " + name);
     const auto& joint = model.activeJoints()[static_cast<std::size_t>(index)];
     const bool prismatic =
         model.joints()[static_cast<std::size_t>(model.jointIndex(name))].type == JointType::Prismatic;

@@ -187,6 +187,8 @@ int runPostures(const Options& o) {
   return 0;
 }
 
+void checkOutputs(const Options& o);
+
 int runRecording(const Options& o) {
   const JointLimits hand = RobotModel::loadByNameOrPath(o.robot).groupJoints("hand");
   const GloveRecording recording = readRecording(o);
@@ -202,6 +204,7 @@ int runRecording(const Options& o) {
   const std::filesystem::path mappingPath =
       o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
   const HandMapping mapping = loadHandMapping(mappingPath);
+  checkOutputs(o);  // again, now against the calibration, mapping and robot read (command_files.hpp)
   SynergyFitOptions fitOptions;
   fitOptions.ownAxisJoints = ownAxisJoints(o, hand);
   const bool synthetic = !recording.notes.empty() && recording.notes.front().rfind("SYNTHETIC", 0) == 0;
@@ -306,10 +309,13 @@ int run(const Options& o) {
                      "give exactly one of: a glove recording, --postures FILE.csv (hand joint postures, no glove), "
                      "--from-graspit FILE.xml, --show MODEL.yaml");
   checkOutputs(o);
-  if (!o.show.empty()) return runShow(o);
-  if (!o.postures.empty()) return runPostures(o);
-  if (!o.graspit.empty()) return runGraspIt(o);
-  return runRecording(o);
+  StagedOutputs staged;  // the model and the figures renamed together, once all are written
+  const int code = !o.show.empty()       ? runShow(o)
+                   : !o.postures.empty() ? runPostures(o)
+                   : !o.graspit.empty()  ? runGraspIt(o)
+                                         : runRecording(o);
+  staged.commit();
+  return code;
 }
 
 const CommandRegistrar registrar{

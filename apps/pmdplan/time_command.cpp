@@ -6,6 +6,7 @@
 
 #include "command_registry.hpp"
 #include "pmdplan/collision/collision_checking.hpp"
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/io/viewer/path_robot_match.hpp"
@@ -44,8 +45,12 @@ int run(const Options& o) {
   CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
   const std::filesystem::path output =
       o.output.empty() ? defaultTrajectoryFile(o.path) : std::filesystem::path(o.output);
+  checkTrajectoryOutputs(task, o.trajectory, output, "-o");  // against every input read so far
   std::printf("%s: timing %zu waypoints\n", o.path.c_str(), checked.points.size());
-  std::fputs(writeTimedTrajectory(task, checking, checked, o.trajectory, output).c_str(), stdout);
+  StagedOutputs staged;  // the JSON and its CSV renamed together
+  const std::string summary = writeTimedTrajectory(task, checking, checked, o.trajectory, output);
+  staged.commit();
+  std::fputs(summary.c_str(), stdout);
   return 0;
 }
 

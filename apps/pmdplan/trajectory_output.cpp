@@ -2,10 +2,12 @@
 
 #include <cstdio>
 
+#include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/files/trajectory_file.hpp"
 #include "pmdplan/trajectory/collision_free_timing.hpp"
 #include "pmdplan/trajectory/joint_motion_limits.hpp"
+#include "pmdplan/trajectory/joint_trajectory.hpp"
 
 namespace pmdplan::cli {
 
@@ -31,18 +33,56 @@ std::filesystem::path defaultTrajectoryFile(const std::filesystem::path& pathFil
   return pathFile.parent_path() / (stem + ".trajectory.json");
 }
 
+std::filesystem::path trajectoryCsvFile(const std::filesystem::path& output) {
+  return std::filesystem::path(output).replace_extension(".csv");
+}
+
+void checkTrajectoryOutputs(const Task& task, const TrajectoryOutputOptions& options,
+                            const std::filesystem::path& output, const std::string& option) {
+  checkTimingOptions(options);
+  jointMotionLimits(*task.robot, options.jointLimits.empty()
+                                     ? std::nullopt
+                                     : std::optional<std::filesystem::path>(options.jointLimits));
+  checkOutputPath(output, option);
+  checkOutputPath(trajectoryCsvFile(output), option + " (its CSV)");
+}
+
+namespace {
+
+/// Runs `check`, giving an InputError from the library the option's name ("blend-tolerance" ->
+/// "--blend-tolerance"; the duration bound names the scales that set it).
+template <typename Check>
+void withOptionNames(const Check& check) {
+  try {
+    check();
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError("", e.field() == "duration" ? "--velocity-scale, --acceleration-scale" : "--" + e.field(),
+                     e.message());
+  }
+}
+
+}  // namespace
+
+void checkTimingOptions(const TrajectoryOutputOptions& options) {
+  withOptionNames([&] {
+    options.timing.check();
+    checkSampling(0.0, options.sampleInterval);
+  });
+}
+
 std::string writeTimedTrajectory(const Task& task, CollisionChecking& checking, const PathFile& path,
                                  const TrajectoryOutputOptions& options, const std::filesystem::path& output) {
-  try {
-    options.timing.check();
-  } catch (const InputError& e) {
-    throw InputError("", "--" + e.field(), e.message());
-  }
-  if (!(options.sampleInterval > 0.0 && options.sampleInterval <= 1.0))
-    throw InputError("", "--sample-interval", "expected seconds in (0, 1]");
+  checkTimingOptions(options);
   const auto limits = jointMotionLimits(*task.robot, options.jointLimits.empty()
                                                          ? std::nullopt
                                                          : std::optional<std::filesystem::path>(options.jointLimits));
+  // The work, bounded before it starts: the integration by the path's rest-to-rest duration, the
+  // samples by the same duration with a margin (the blended timing takes up to a few percent longer).
+  withOptionNames([&] {
+    checkTimingWork(path.points, limits, options.timing);
+    checkSampling(1.1 * restToRestDuration(path.points, limits, options.timing), options.sampleInterval);
+  });
   const SweptDistanceBound bound(*task.robot);
   const CollisionFreeTiming timing =
       timeCollisionFree(path.points, limits, options.timing, checking.states(), bound, checking.tolerance());
@@ -57,8 +97,7 @@ std::string writeTimedTrajectory(const Task& task, CollisionChecking& checking, 
   }
   file.blendTolerance = timing.blendTolerance;
   file.trajectory = sampleTrajectory(*timing.timed, path.jointNames, options.sampleInterval);
-  std::filesystem::path csv = output;
-  csv.replace_extension(".csv");
+  const std::filesystem::path csv = trajectoryCsvFile(output);
   writeTrajectoryFile(output, file);
   writeTrajectoryCsv(csv, file.trajectory);
   char summary[512];

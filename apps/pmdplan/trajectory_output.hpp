@@ -22,8 +22,19 @@ struct TrajectoryOutputOptions {
 /// --blend-tolerance, --velocity-scale, --acceleration-scale, --joint-limits, --sample-interval.
 void addTrajectoryOptions(CLI::App& app, TrajectoryOutputOptions& options);
 
+/// The timing options' ranges (TimingSettings::check, checkSampling): InputError naming the option.
+void checkTimingOptions(const TrajectoryOutputOptions& options);
+
 /// TASK.path.json -> TASK.trajectory.json beside it.
 std::filesystem::path defaultTrajectoryFile(const std::filesystem::path& pathFile);
+
+/// F.json -> F.csv: the CSV written beside a trajectory file.
+std::filesystem::path trajectoryCsvFile(const std::filesystem::path& output);
+
+/// Before the work: reads the joint limits the timing will use (so they count as inputs) and
+/// checks `output` and its CSV as outputs of `option` (core/atomic_file.hpp).
+void checkTrajectoryOutputs(const Task& task, const TrajectoryOutputOptions& options,
+                            const std::filesystem::path& output, const std::string& option);
 
 /// Times `path`, writes `output` and its CSV; returns a line to print (duration, blends, checks).
 std::string writeTimedTrajectory(const Task& task, CollisionChecking& checking, const PathFile& path,

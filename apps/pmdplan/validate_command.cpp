@@ -32,7 +32,13 @@ int run(const Options& o) {
   ExactCollisionChecker checker(task);
   SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
   const PathPhases phases{file.closingFrom};
-  const auto result = GraspRule(task).validatePath(checker, segments, file.points, phases);
+  PathValidation result;
+  try {
+    result = GraspRule(task).validatePath(checker, segments, file.points, phases);
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError(o.path, e.field(), e.message());  // the work bound (checkValidationWork) names the file
+  }
   if (o.json) {
     std::cout << formatJson(pathValidationJson(result, phases, o.toleranceMm));
   } else {

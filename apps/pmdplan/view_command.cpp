@@ -19,6 +19,7 @@
 #include "pmdplan/io/viewer/viewer_folder.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/world/task.hpp"
+#include "viewer_folder_outputs.hpp"
 
 namespace pmdplan::cli::view_command {
 namespace {
@@ -91,6 +92,7 @@ int run(const Options& o) {
       viewerData(task, path, synergies ? &*synergies : nullptr, {inputs.front().file, synergyFile}, parameters);
   addOverlayPaths(data, task, inputs, parameters);
   const std::filesystem::path out = o.out.empty() ? defaultOutput(o) : std::filesystem::path(o.out);
+  checkViewerFolderOutputs(out, data, viewerAssetDirectory(), "--out");  // no file of it may be an input
   writeViewerFolder(out, data, viewerAssetDirectory());
   std::cout << "wrote " << out.string() << "/ (";
   if (inputs.size() > 1) std::cout << inputs.size() << " paths; the first: ";

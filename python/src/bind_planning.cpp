@@ -16,6 +16,7 @@
 #include "pmdplan/bench/ompl_planning.hpp"
 #include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/collision/grasp_rule.hpp"
+#include "pmdplan/core/command_files.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/io/files/path_validation_json.hpp"
@@ -25,6 +26,7 @@
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/synergy/synergy_readout.hpp"
+#include "python_interrupt.hpp"
 
 namespace pmdplan::python {
 namespace {
@@ -155,12 +157,14 @@ PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle set
   if (!entry)
     throw InputError("", "--planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
   auto checking = checkerFor(task, checker, toleranceMm);
+  PythonInterrupt interrupt;  // Ctrl-C ends the run as its time limit would, then raises KeyboardInterrupt
   // The CLI's message for a start or goal plan refuses: checked first for OMPL's planners (they do
   // not check them), after the run for ours (they stop at once with that status; no cost otherwise).
   if (entry->family == PlannerFamily::Ompl) requirePlannableEnds(*task.task, *checking);
   PyPlanResult result = entry->family == PlannerFamily::Ompl
                             ? planOmpl(task, *checking, *entry, seed, timeLimit)
                             : planPmd(task, *checking, *entry, settings, synergies, seed, timeLimit);
+  interrupt.raiseIfInterrupted();
   if (result.statistics.status == PlannerStatus::InvalidStart || result.statistics.status == PlannerStatus::InvalidGoal)
     requirePlannableEnds(*task.task, *checking);
   result.task = task.task->name;
@@ -188,11 +192,15 @@ py::object validate(const PyTask& task, py::handle path, double toleranceMm, std
     points = configurationsFrom(task.task->robot->activeJoints(), path, "path", false);
   }
   PathValidation validation;
-  {
+  PythonInterrupt interrupt;  // Ctrl-C stops the check between segments and raises KeyboardInterrupt
+  try {
     py::gil_scoped_release release;
     ExactCollisionChecker checker(*task.task);
     SegmentChecker segments(checker, *task.task->robot, tolerance);
     validation = GraspRule(*task.task).validatePath(checker, segments, points, phases);
+  } catch (const StopRequested&) {
+    interrupt.raiseIfInterrupted();
+    throw;
   }
   return jsonToPython(pathValidationJson(validation, phases, toleranceMm));
 }
@@ -239,6 +247,7 @@ void bindResult(py::module_& m) {
       .def(
           "save",
           [](const PyPlanResult& r, const std::filesystem::path& file) {
+            const CommandFileScope files;  // the output rule of the CLI (core/command_files.hpp)
             if (!r.statistics.solved())
               throw InputError(file.string(), "", "the run did not solve: there is no path to write");
             writePathFile(

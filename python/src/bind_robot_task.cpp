@@ -122,7 +122,11 @@ void bindTask(py::module_& m) {
               if (task.target && !task.findObstacle(*task.target)) task.target.reset();
               world = std::make_shared<const int>(0);
             }
-            if (name) task.name = *name;
+            if (name) {
+              if (const std::string problem = taskNameProblem(*name); !problem.empty())
+                throw InputError("", "name", problem);
+              task.name = *name;
+            }
             return taskOf(std::move(task), std::move(world));
           },
           py::arg("start") = py::none(), py::arg("goal") = py::none(), py::arg("obstacles") = py::none(),

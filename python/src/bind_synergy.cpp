@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "pmdplan/core/command_files.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/synergy/synergy_fit.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
@@ -100,7 +101,11 @@ void bindModel(py::module_& m) {
           },
           py::arg("robot_name"), "The robot's shipped model (data/synergies/<robot>_default.yaml).")
       .def(
-          "save", [](const PySynergyModel& s, const std::filesystem::path& path) { saveSynergyModel(path, *s.model); },
+          "save",
+          [](const PySynergyModel& s, const std::filesystem::path& path) {
+            const CommandFileScope files;  // the output rule of the CLI (core/command_files.hpp)
+            saveSynergyModel(path, *s.model);
+          },
           py::arg("path"),
           "Writes the model file (atomically; numbers in their shortest exact form, so it loads back identical).")
       .def(

@@ -10,6 +10,7 @@
 
 #include "conversions.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/model/mesh_file.hpp"
 
 namespace pmdplan::python {
 namespace {
@@ -75,13 +76,17 @@ Shape shapeFrom(const std::string& type, py::handle value, const std::string& fi
     throw InputError("", field + ".file", "expected a mesh file path");
   mesh.file = std::filesystem::absolute(py::str(file).cast<std::string>()).lexically_normal();
   std::error_code error;
-  if (!std::filesystem::is_regular_file(mesh.file, error))
+  if (!std::filesystem::exists(mesh.file, error))
     throw InputError("", field + ".file", "mesh file not found: " + mesh.file.string());
   if (dict.contains("scale")) {
     const auto s = numbers(dict["scale"], 3, field + ".scale", "scale factors [x, y, z], each greater than 0", true);
     mesh.scale = Eigen::Vector3d(s[0], s[1], s[2]);
   }
-  return mesh;
+  // The scale within ShapeBounds before the file is read (".mesh.scale[i]" becomes "[i]" of the scale).
+  if (auto problem = shapeBoundsProblem(mesh))
+    throw InputError("", field + ".scale" + problem->part.substr(problem->part.find('[')), problem->message);
+  // Read now, through the same checks as a task file's meshes (model/mesh_file.hpp).
+  return loadMeshShape(mesh.file, mesh.scale);
 }
 
 Eigen::Matrix3d rotationFromDegrees(const std::vector<double>& rpy) {
@@ -97,6 +102,7 @@ Eigen::Isometry3d placementOfDict(const py::dict& dict, const std::string& field
   const auto xyz = numbers(required(dict, "xyz", field, "a position [x, y, z] in metres"), 3, field + ".xyz",
                            "a position [x, y, z] in metres", false);
   pose.translation() = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+  checkPositionBounds(pose.translation(), "", field + ".xyz");
   if (dict.contains("rpy_deg"))
     pose.linear() = rotationFromDegrees(
         numbers(dict["rpy_deg"], 3, field + ".rpy_deg", "fixed-axis angles [roll, pitch, yaw] in degrees", false));
@@ -123,6 +129,7 @@ Eigen::Isometry3d placementFrom(py::handle value, const std::string& field) {
   if (!matrix.allFinite() || !(rotation * rotation.transpose()).isIdentity(1e-9) || rotation.determinant() < 0.0 ||
       !matrix.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1)))
     throw InputError("", field, "expected a 4x4 homogeneous matrix with a rotation (orthonormal, determinant 1)");
+  checkPositionBounds(matrix.topRightCorner<3, 1>(), "", field + ".translation");
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.matrix() = matrix;
   return pose;
@@ -134,6 +141,7 @@ std::vector<Obstacle> obstaclesFrom(py::handle list) {
   if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list))
     throw InputError("", "obstacles", std::string("expected a list of ") + kObstacleForm);
   std::set<std::string> names;
+  MeshTriangleBudget meshBudget("obstacle meshes of the task");
   const auto items = py::reinterpret_borrow<py::sequence>(list);
   for (std::size_t i = 0; i < items.size(); ++i) {
     const std::string field = "obstacles[" + std::to_string(i) + "]";
@@ -160,6 +168,8 @@ std::vector<Obstacle> obstaclesFrom(py::handle list) {
           "", field,
           "no shape; expected one of box: [x, y, z], cylinder: {radius, length}, sphere: radius, mesh: {file, scale}");
     obstacle.shape = shapeFrom(type, dict[type.c_str()], field + "." + type);
+    checkShapeBounds(obstacle.shape, "", field);  // the rule of task files and URDFs (model/collision_shape.hpp)
+    if (const auto* mesh = std::get_if<MeshShape>(&obstacle.shape)) meshBudget.add(*mesh, "", field + ".mesh");
     obstacle.pose = placementOfDict(dict, field);
     obstacles.push_back(std::move(obstacle));
   }
@@ -195,6 +205,8 @@ py::dict obstacleToPython(const Obstacle& obstacle) {
 Task taskFrom(std::shared_ptr<const RobotModel> robot, py::handle start, py::handle goal, py::handle obstacles,
               py::handle base, const TaskDescription& description) {
   Task task;
+  if (const std::string problem = taskNameProblem(description.name); !problem.empty())
+    throw InputError("", "name", problem);
   task.name = description.name;
   task.description = description.description;
   task.robot = std::move(robot);

@@ -22,6 +22,7 @@
 #include "ompl_checker_adapters.hpp"
 #include "ompl_pmd_state_sampler.hpp"
 #include "pmdplan/bench/ompl_task_space.hpp"
+#include "pmdplan/core/stop_request.hpp"
 #include "pmdplan/planning/hand_sampling_mode.hpp"
 
 namespace pmdplan {
@@ -89,7 +90,9 @@ OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSp
   const ob::PlannerPtr planner = (*factory)(si);
   planner->setProblemDefinition(problem);
   planner->setup();
-  const ob::PlannerStatus status = planner->solve(ob::timedPlannerTerminationCondition(timeLimitSeconds));
+  const ob::PlannerStatus status = planner->solve(ob::plannerOrTerminationCondition(
+      ob::timedPlannerTerminationCondition(timeLimitSeconds),
+      ob::PlannerTerminationCondition([] { return stopRequested(); })));  // core/stop_request.hpp
   result.planningTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   result.status = status.asString();
   result.solved = status == ob::PlannerStatus::EXACT_SOLUTION;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/stop_request.hpp"
+
 namespace pmdplan {
 namespace {
 
@@ -14,6 +17,21 @@ void addPairs(PathValidation& result, const CollisionReport& report) {
 }
 
 }  // namespace
+
+long checkValidationWork(const SegmentChecker& segments, const std::vector<Configuration>& path) {
+  double states = 0.0;  // intervals() is at most 10⁷ a segment; the sum is compared as a double
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    states += static_cast<double>(segments.bound().intervals(path[i], path[i + 1], segments.tolerance())) + 1.0;
+  if (states > static_cast<double>(kMaxValidationStates)) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "checking the %zu segments at %g mm needs %.0f states, more than the %ld pmdplan checks in one "
+                  "validation; expected a shorter path or a larger --tolerance-mm",
+                  path.size() - 1, segments.tolerance() * 1000.0, states, kMaxValidationStates);
+    throw InputError("", "points", text);
+  }
+  return static_cast<long>(states);
+}
 
 PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker& segments,
                             const std::vector<Configuration>& path, const Configuration& start,
@@ -37,8 +55,10 @@ PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker
   if (closing && (closing->from == 0 || closing->from + 1 >= path.size() || !closing->rule))
     fail("the closing phase must start after the first point and before the last");
   if (!result.valid) return result;
+  checkValidationWork(segments, path);
   const auto closingCheck = [&](const Configuration& q) { return closing->rule->forbidden(checker.check(q)); };
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    if (stopRequested()) throw StopRequested();
     const bool closingSegment = closing && i >= closing->from;
     const auto inspection = closingSegment ? segments.inspect(closingCheck, path[i], path[i + 1])
                                            : segments.inspect(checker, path[i], path[i + 1]);

@@ -1,6 +1,7 @@
 #include "pmdplan/glove/glove_calibration_file.hpp"
 
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/text/number_text.hpp"
 #include "pmdplan/text/yaml_field.hpp"
 #include "pmdplan/text/yaml_writing.hpp"
@@ -13,7 +14,8 @@ constexpr std::string_view kFormat = "pmdplan-glove-calibration";
 /// A sensor named by `field` (a map key or a value): its index in cyberGloveSensorNames().
 int sensorByName(const YamlField& field, const std::string& name) {
   const int index = cyberGloveSensorIndex(name);
-  if (index < 0) field.fail("unknown sensor '" + name + "'; expected one of " + std::string(cyberGloveSensorList()));
+  if (index < 0)
+    field.fail("unknown sensor " + quotedText(name) + "; expected one of " + std::string(cyberGloveSensorList()));
   return index;
 }
 

@@ -7,6 +7,8 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
+#include "pmdplan/text/csv_reading.hpp"
 #include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
@@ -51,7 +53,7 @@ std::vector<int> readHeader(std::string_view line, int lineNumber, const std::st
     const int sensor = cyberGloveSensorIndex(name);
     if (sensor < 0)
       throw InputError(source, field,
-                       "unknown column '" + name + "'; expected time_s (optional) and the sensor columns " +
+                       "unknown column " + quotedText(name) + "; expected time_s (optional) and the sensor columns " +
                            std::string(cyberGloveSensorList()));
     if (seen[static_cast<std::size_t>(sensor)]) throw InputError(source, field, "column " + name + " appears twice");
     seen[static_cast<std::size_t>(sensor)] = true;
@@ -69,17 +71,19 @@ std::vector<int> readHeader(std::string_view line, int lineNumber, const std::st
 
 std::uint8_t readSensorCell(std::string_view cell, const std::string& source, const std::string& field) {
   if (const auto whole = parseWholeNumber(cell)) {
-    if (*whole > 255) throw InputError(source, field, std::string(cell) + " is outside the raw sensor range 0-255");
+    if (*whole > 255)
+      throw InputError(source, field, std::to_string(*whole) + " is outside the raw sensor range 0-255");
     return static_cast<std::uint8_t>(*whole);
   }
   if (const auto number = parseFiniteNumber(cell); number && std::floor(*number) == *number)
-    throw InputError(source, field, std::string(cell) + " is outside the raw sensor range 0-255");
-  throw InputError(source, field, "'" + std::string(cell) + "' is not an integer 0-255");
+    throw InputError(source, field, messageNumberText(*number) + " is outside the raw sensor range 0-255");
+  throw InputError(source, field, quotedText(cell) + " is not an integer 0-255");
 }
 
 }  // namespace
 
 GloveRecording parseGloveCsv(std::string_view text, const std::string& sourceName) {
+  text = withoutByteOrderMark(text);
   GloveRecording recording;
   recording.source = sourceName;
   std::vector<int> columns;
@@ -119,7 +123,7 @@ GloveRecording parseGloveCsv(std::string_view text, const std::string& sourceNam
       const std::string field = lineField(lineNumber) + ", column " + columnName;
       if (column < 0) {
         const auto value = parseFiniteNumber(cells[c]);
-        if (!value) throw InputError(sourceName, field, "'" + std::string(cells[c]) + "' is not a time in seconds");
+        if (!value) throw InputError(sourceName, field, quotedText(cells[c]) + " is not a time in seconds");
         time = *value;
       } else {
         frame[static_cast<std::size_t>(column)] = readSensorCell(cells[c], sourceName, field);
@@ -127,6 +131,7 @@ GloveRecording parseGloveCsv(std::string_view text, const std::string& sourceNam
     }
     recording.frames.push_back(frame);
     if (hasTime) recording.timeS.push_back(time);
+    recording.frameLines.push_back(lineNumber);
     if (firstDataLine == 0) firstDataLine = lineNumber;
     lastDataLine = lineNumber;
   }

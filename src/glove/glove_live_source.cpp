@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <thread>
 
 #include "pmdplan/core/input_error.hpp"
@@ -153,8 +154,21 @@ std::unique_ptr<GloveLiveSource> openGloveDevice(const std::string& path, const 
 std::unique_ptr<GloveLiveSource> replayGloveRecording(GloveRecording recording, double rateHz, double speed) {
   if (!(rateHz > 0) || rateHz > 10000)
     throw InputError("", "--rate", "expected a frame rate in Hz, > 0 and at most 10000");
-  if (!(speed > 0) || speed > 1000)
-    throw InputError("", "--speed", "expected a playback speed > 0 and at most 1000 (1: as recorded)");
+  if (!(speed >= kSmallestReplaySpeed && speed <= kLargestReplaySpeed))
+    throw InputError("", "--speed", "expected a playback speed from 0.01 to 100 (1: as recorded)");
+  // The whole recording is read before it plays: its times are checked here, before the first frame.
+  for (std::size_t f = 1; f < recording.timeS.size(); ++f) {
+    const double gap = recording.timeS[f] - recording.timeS[f - 1];
+    if (gap >= 0.0 && gap <= kLongestReplayGapS) continue;
+    const std::string field = f < recording.frameLines.size() ? "line " + std::to_string(recording.frameLines[f])
+                                                              : "frame " + std::to_string(f + 1);
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "time_s %s by %.6g s from the frame before; expected times that never go back "
+                  "and gaps of at most %g s",
+                  gap < 0.0 ? "goes back" : "jumps ahead", std::abs(gap), kLongestReplayGapS);
+    throw InputError(recording.source, field + ", column time_s", text);
+  }
   return std::make_unique<ReplaySource>(std::move(recording), rateHz, speed);
 }
 

@@ -23,8 +23,15 @@ std::filesystem::path resolvePackage(const std::string& reference, const std::fi
   const auto slash = rest.find('/');
   const std::string package = rest.substr(0, slash);
   const std::string inside = slash == std::string::npos ? std::string() : rest.substr(slash + 1);
-  if (package.empty())
+  if (package.empty() || package == "." || package == "..")
     throw InputError(referencingFile.string(), field, "'" + reference + "': expected package://NAME/path/in/package");
+  // The path must stay inside the package: `package://pkg/../../etc/passwd` is refused, not followed.
+  // (Symbolic links inside the package are followed, as ROS does: colcon --symlink-install makes them.)
+  const std::filesystem::path relative = std::filesystem::path(inside).lexically_normal();
+  if (relative.is_absolute() || (!relative.empty() && *relative.begin() == ".."))
+    throw InputError(referencingFile.string(), field,
+                     "'" + reference + "' leaves the folder of package '" + package +
+                         "'; expected a path inside the package (no '..' above it)");
   const PackageSearchPath searchPath = packageSearchPath();
   std::error_code error;
   for (const auto& directory : searchPath.directories) {

@@ -2,24 +2,14 @@
 
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
+#include "pmdplan/model/collision_shape.hpp"
 
 namespace pmdplan::urdf_checks {
 namespace {
-
-std::string shown(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
-void requirePositive(double value, const std::string& file, const std::string& field, const char* what) {
-  if (!(std::isfinite(value) && value > 0.0))
-    throw InputError(file, field, std::string(what) + " must be a finite length greater than 0, got " + shown(value));
-}
 
 /// urdfdom links children by shared_ptr: a loop is a reference cycle that would outlive the
 /// model. Cut the links' child lists before refusing it.
@@ -91,38 +81,59 @@ void checkAllCollisionsRead(const tinyxml2::XMLDocument& document, const urdf::M
   }
 }
 
+void checkNoXacro(const tinyxml2::XMLDocument& document, const std::string& file) {
+  std::vector<const tinyxml2::XMLElement*> pending;
+  if (document.RootElement()) pending.push_back(document.RootElement());
+  while (!pending.empty()) {
+    const tinyxml2::XMLElement* element = pending.back();
+    pending.pop_back();
+    const std::string where = "line " + std::to_string(element->GetLineNum());
+    const std::string name = element->Name();
+    if (name.rfind("xacro:", 0) == 0)
+      throw InputError(file, where,
+                       "<" + fieldKeyText(name) +
+                           "> is a xacro element, which a URDF reader ignores: run xacro first "
+                           "(xacro robot.urdf.xacro > robot.urdf) and give pmdplan its output");
+    for (const auto* a = element->FirstAttribute(); a; a = a->Next()) {
+      const std::string value = a->Value();
+      if (value.find("${") != std::string::npos || value.find("$(") != std::string::npos)
+        throw InputError(file, where + ", <" + fieldKeyText(name) + " " + fieldKeyText(a->Name()) + ">",
+                         "holds a xacro substitution (${...} or $(...)), which a URDF reader does not expand: run "
+                         "xacro first (xacro robot.urdf.xacro > robot.urdf) and give pmdplan its output");
+    }
+    for (const auto* child = element->FirstChildElement(); child; child = child->NextSiblingElement())
+      pending.push_back(child);
+  }
+}
+
 void checkGeometry(const urdf::Geometry& geometry, const std::string& file, const std::string& field) {
   switch (geometry.type) {
     case urdf::Geometry::BOX: {
       const auto& b = static_cast<const urdf::Box&>(geometry);
-      for (const double d : {b.dim.x, b.dim.y, b.dim.z}) requirePositive(d, file, field + ".box", "each box size");
+      checkShapeBounds(BoxShape{Eigen::Vector3d(b.dim.x, b.dim.y, b.dim.z)}, file, field);
       break;
     }
     case urdf::Geometry::CYLINDER: {
       const auto& c = static_cast<const urdf::Cylinder&>(geometry);
-      requirePositive(c.radius, file, field + ".cylinder", "the radius");
-      requirePositive(c.length, file, field + ".cylinder", "the length");
+      checkShapeBounds(CylinderShape{c.radius, c.length}, file, field);
       break;
     }
     case urdf::Geometry::SPHERE:
-      requirePositive(static_cast<const urdf::Sphere&>(geometry).radius, file, field + ".sphere", "the radius");
+      checkShapeBounds(SphereShape{static_cast<const urdf::Sphere&>(geometry).radius}, file, field);
       break;
     case urdf::Geometry::MESH: {
       const auto& m = static_cast<const urdf::Mesh&>(geometry);
-      for (const double s : {m.scale.x, m.scale.y, m.scale.z})
-        if (!(std::isfinite(s) && s != 0.0))
-          throw InputError(file, field + ".mesh.scale",
-                           "each scale factor must be a finite number other than 0, got " + shown(s));
+      checkShapeBounds(MeshShape{m.filename, Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z), nullptr}, file, field);
       break;
     }
   }
 }
 
 void checkPose(const urdf::Pose& pose, const std::string& file, const std::string& field) {
-  const double values[] = {pose.position.x, pose.position.y, pose.position.z, pose.rotation.x,
-                           pose.rotation.y, pose.rotation.z, pose.rotation.w};
-  for (const double v : values)
+  const double rotation[] = {pose.rotation.x, pose.rotation.y, pose.rotation.z, pose.rotation.w};
+  for (const double v : rotation)
     if (!std::isfinite(v)) throw InputError(file, field + ".origin", "xyz and rpy must be finite numbers");
+  checkPositionBounds(Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z), file, field + ".origin.xyz");
 }
 
 }  // namespace pmdplan::urdf_checks

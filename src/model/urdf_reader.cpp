@@ -106,6 +106,7 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
   if (!document.RootElement() || std::string(document.RootElement()->Name()) != "robot")
     throw InputError(file, "root element", "expected <robot>");
   urdf_checks::checkSize(document, file);
+  urdf_checks::checkNoXacro(document, file);
 
   urdf::ModelInterfaceSharedPtr parsed;
   {
@@ -126,6 +127,7 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
 
   // Links in a deterministic order: the tree from the root, children in joint-name order.
   std::map<std::string, int> linkIndex;
+  MeshTriangleBudget meshBudget("collision meshes of the robot");
   std::function<void(const urdf::LinkConstSharedPtr&)> addLink = [&](const urdf::LinkConstSharedPtr& link) {
     Link out;
     out.name = link->name;
@@ -135,8 +137,10 @@ void RobotModelBuilder::readUrdf(RobotModel& model, const std::filesystem::path&
       const std::string field = "link[" + link->name + "].collision[" + std::to_string(i) + "]";
       urdf_checks::checkGeometry(*collision->geometry, file, field);
       urdf_checks::checkPose(collision->origin, file, field);
-      if (auto shape = toShape(*collision->geometry, urdf, field))
+      if (auto shape = toShape(*collision->geometry, urdf, field)) {
+        if (const auto* mesh = std::get_if<MeshShape>(&*shape)) meshBudget.add(*mesh, file, field + ".mesh");
         out.collisionShapes.push_back({*shape, toIsometry(collision->origin)});
+      }
     }
     for (std::size_t i = 0; i < link->visual_array.size(); ++i) {
       const auto& visual = link->visual_array[i];

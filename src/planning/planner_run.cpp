@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pmdplan/core/stop_request.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
 
 namespace pmdplan {
@@ -27,7 +28,9 @@ void PlannerRun::begin(double timeLimit, const MotionValidator& motionValidator)
   motionChecksAtStart_ = motionValidator.statesChecked();
 }
 
-bool PlannerRun::timeIsUp() const { return deadline_ && Clock::now() >= *deadline_; }
+bool PlannerRun::timeIsUp() const {
+  return (deadline_ && Clock::now() >= *deadline_) || stopRequested();  // a stop ends a run as its deadline does
+}
 
 double PlannerRun::elapsedSeconds() const { return std::chrono::duration<double>(Clock::now() - began_).count(); }
 
@@ -36,7 +39,8 @@ std::vector<Configuration> PlannerRun::finishPath(const std::vector<Configuratio
                                                   PlanningStatistics& statistics) const {
   statistics.planningTime = elapsedSeconds();
   const Clock::time_point smoothingBegan = Clock::now();
-  std::vector<Configuration> path = smooth ? smoothPath(found, space, motionValidator) : found;
+  std::vector<Configuration> path =
+      smooth ? smoothPath(found, space, motionValidator, [this] { return timeIsUp(); }) : found;
   statistics.smoothingTime = std::chrono::duration<double>(Clock::now() - smoothingBegan).count();
   statistics.pathNodesBeforeSmoothing = found.size();
   statistics.pathNodes = path.size();

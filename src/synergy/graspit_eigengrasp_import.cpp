@@ -8,6 +8,7 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/text/number_text.hpp"
 
@@ -29,11 +30,11 @@ Eigen::VectorXd readDimVals(const XMLElement* parent, int dimensions, const std:
     const auto index = name.size() > 1 && name[0] == 'd' ? parseWholeNumber(name.substr(1)) : std::nullopt;
     if (!index || *index >= dimensions)
       throw InputError(file, lineOf(values) + " (" + what + ")",
-                       "attribute '" + name + "' is not d0 .. d" + std::to_string(dimensions - 1));
+                       "attribute " + quotedText(name) + " is not d0 .. d" + std::to_string(dimensions - 1));
     const auto value = parseFiniteNumber(attribute->Value());
     if (!value)
-      throw InputError(file, lineOf(values) + " (" + what + "." + name + ")",
-                       "'" + std::string(attribute->Value()) + "' is not a number");
+      throw InputError(file, lineOf(values) + " (" + what + "." + fieldKeyText(name) + ")",
+                       quotedText(attribute->Value()) + " is not a number");
     vector(static_cast<Eigen::Index>(*index)) = *value;
   }
   return vector;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 
 namespace pmdplan {
 
@@ -17,15 +18,15 @@ void checkSynergyModelFitsHand(const SynergyModel& model, const std::vector<std:
   std::vector<char> covered(handJoints.size(), 0);
   for (const JointLimit& joint : model.joints) {
     const auto at = std::find(handJoints.begin(), handJoints.end(), joint.name);
-    if (at == handJoints.end()) reject("joints", "'" + joint.name + "' is not a hand joint of the robot");
+    if (at == handJoints.end()) reject("joints", quotedText(joint.name) + " is not a hand joint of the robot");
     if (covered[static_cast<std::size_t>(at - handJoints.begin())]++ != 0)
-      reject("joints", "'" + joint.name + "' is listed twice");
+      reject("joints", quotedText(joint.name) + " is listed twice");
     if (!std::isfinite(joint.lower) || !std::isfinite(joint.upper) || !(joint.range() > 0.0))
-      reject("joints", "'" + joint.name + "' needs finite limits with lower < upper");
+      reject("joints", quotedText(joint.name) + " needs finite limits with lower < upper");
   }
   for (std::size_t i = 0; i < handJoints.size(); ++i)
     if (covered[i] == 0)
-      reject("joints", "the robot's hand joint '" + handJoints[i] + "' is missing from the synergy model");
+      reject("joints", "the robot's hand joint " + quotedText(handJoints[i]) + " is missing from the synergy model");
 
   if (model.mean.size() != n)
     reject("mean",
@@ -43,9 +44,9 @@ void checkSynergyModelFitsHand(const SynergyModel& model, const std::vector<std:
 
   std::vector<std::string> ownAxes;
   for (const std::string& name : model.ownAxisJoints) {
-    if (model.jointIndex(name) < 0) reject("own_axis_joints", "'" + name + "' is not one of the model's joints");
+    if (model.jointIndex(name) < 0) reject("own_axis_joints", quotedText(name) + " is not one of the model's joints");
     if (std::find(ownAxes.begin(), ownAxes.end(), name) != ownAxes.end())
-      reject("own_axis_joints", "'" + name + "' is listed twice");
+      reject("own_axis_joints", quotedText(name) + " is listed twice");
     ownAxes.push_back(name);
   }
 }

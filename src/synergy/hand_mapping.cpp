@@ -3,13 +3,14 @@
 #include <algorithm>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/glove/cyberglove_sensors.hpp"
 #include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
 std::string jointRuleField(const JointRule& rule) {
-  return rule.sourceLine > 0 ? "line " + std::to_string(rule.sourceLine) + " (joint " + rule.joint + ")"
-                             : "joint " + rule.joint;
+  const std::string joint = fieldKeyText(rule.joint);  // a key of the mapping file
+  return rule.sourceLine > 0 ? "line " + std::to_string(rule.sourceLine) + " (joint " + joint + ")" : "joint " + joint;
 }
 
 std::vector<const JointRule*> rulesForJoints(const HandMapping& mapping, const JointLimits& handJoints) {
@@ -21,11 +22,11 @@ std::vector<const JointRule*> rulesForJoints(const HandMapping& mapping, const J
       std::string names;
       for (const auto& limit : handJoints) names += (names.empty() ? "" : ", ") + limit.name;
       throw InputError(mapping.sourceFile, jointRuleField(rule),
-                       "unknown joint '" + rule.joint + "'; the robot's hand joints are " + names);
+                       "unknown joint " + quotedText(rule.joint) + "; the robot's hand joints are " + names);
     }
     const auto index = static_cast<std::size_t>(joint - handJoints.begin());
     if (rules[index] != nullptr)
-      throw InputError(mapping.sourceFile, jointRuleField(rule), "a second rule for joint " + rule.joint);
+      throw InputError(mapping.sourceFile, jointRuleField(rule), "a second rule for joint " + fieldKeyText(rule.joint));
     if (rule.isConstant() && (rule.offset < joint->lower || rule.offset > joint->upper))
       throw InputError(mapping.sourceFile, jointRuleField(rule),
                        "constant " + exactNumberText(rule.offset) + " rad is outside the joint's limits [" +

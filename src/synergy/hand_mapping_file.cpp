@@ -3,6 +3,7 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/glove/cyberglove_sensors.hpp"
 #include "pmdplan/text/number_text.hpp"
 #include "pmdplan/text/yaml_field.hpp"
@@ -34,8 +35,9 @@ JointRule readRule(const YamlField& node) {
   for (const auto& [name, gain] : terms) {
     const int sensor = cyberGloveSensorIndex(name);
     if (sensor < 0)
-      throw InputError(node.file(), "line " + std::to_string(gain.line()) + " (joint " + rule.joint + ")",
-                       "unknown sensor '" + name + "'; expected one of " + std::string(cyberGloveSensorList()));
+      throw InputError(
+          node.file(), "line " + std::to_string(gain.line()) + " (joint " + fieldKeyText(rule.joint) + ")",
+          "unknown sensor " + quotedText(name) + "; expected one of " + std::string(cyberGloveSensorList()));
     rule.terms.push_back({sensor, gain.number("a gain")});
   }
   if (offset) rule.offset = offset->number("an offset in rad");

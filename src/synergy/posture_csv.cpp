@@ -7,6 +7,8 @@
 
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
+#include "pmdplan/text/csv_reading.hpp"
 #include "pmdplan/text/number_text.hpp"
 
 namespace pmdplan {
@@ -34,7 +36,7 @@ std::string jointList(const JointLimits& hand) {
 
 Eigen::MatrixXd readPostureCsv(const std::filesystem::path& file, const JointLimits& hand, PostureUnit unit) {
   const std::string name = file.string();
-  std::stringstream in(readTextFile(file));
+  std::stringstream in(std::string(withoutByteOrderMark(readTextFile(file))));
   const double scale = unit == PostureUnit::Degrees ? std::numbers::pi / 180.0 : 1.0;
   const std::string unitName = unit == PostureUnit::Degrees ? "deg" : "rad";
   std::vector<int> columnJoint;  // hand index of each column
@@ -50,8 +52,8 @@ Eigen::MatrixXd readPostureCsv(const std::filesystem::path& file, const JointLim
             std::find_if(hand.begin(), hand.end(), [&](const JointLimit& j) { return j.name == column; });
         if (found == hand.end())
           throw InputError(name, where,
-                           "header column '" + column +
-                               "' is not a hand joint; expected a header naming the hand joints: " + jointList(hand));
+                           "header column " + quotedText(column) +
+                               " is not a hand joint; expected a header naming the hand joints: " + jointList(hand));
         const int index = static_cast<int>(found - hand.begin());
         if (std::find(columnJoint.begin(), columnJoint.end(), index) != columnJoint.end())
           throw InputError(name, where, "header names '" + column + "' twice");
@@ -73,11 +75,11 @@ Eigen::MatrixXd readPostureCsv(const std::filesystem::path& file, const JointLim
       const JointLimit& joint = hand[static_cast<std::size_t>(columnJoint[c])];
       const std::string field = where + ", column " + joint.name;
       const auto value = parseFiniteNumber(values[c]);
-      if (!value) throw InputError(name, field, "expected a number in " + unitName + ", got '" + values[c] + "'");
+      if (!value) throw InputError(name, field, "expected a number in " + unitName + ", got " + quotedText(values[c]));
       const double radians = *value * scale;
       if (radians < joint.lower - 1e-9 || radians > joint.upper + 1e-9)
         throw InputError(name, field,
-                         values[c] + " " + unitName + " is outside the joint limits " +
+                         messageNumberText(*value) + " " + unitName + " is outside the joint limits " +
                              messageNumberText(joint.lower / scale) + " .. " + messageNumberText(joint.upper / scale) +
                              " " + unitName);
       posture[columnJoint[c]] = std::clamp(radians, joint.lower, joint.upper);

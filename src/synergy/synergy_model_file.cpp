@@ -8,6 +8,7 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/data_directory.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/text/number_text.hpp"
 #include "pmdplan/text/yaml_field.hpp"
 #include "pmdplan/text/yaml_writing.hpp"
@@ -43,10 +44,11 @@ void validate(const SynergyModel& model, const std::string& source, const Locate
     const JointLimit& joint = model.joints[static_cast<std::size_t>(j)];
     if (joint.name.empty()) throw InputError(source, at(Part::Joints, j), "a joint without a name");
     if (!(joint.lower < joint.upper))
-      throw InputError(source, at(Part::Joints, j), "joint " + joint.name + ": lower must be below upper");
+      throw InputError(source, at(Part::Joints, j),
+                       "joint " + fieldKeyText(joint.name) + ": lower must be below upper");
     for (int k = 0; k < j; ++k)
       if (model.joints[static_cast<std::size_t>(k)].name == joint.name)
-        throw InputError(source, at(Part::Joints, j), "joint " + joint.name + " listed twice");
+        throw InputError(source, at(Part::Joints, j), "joint " + fieldKeyText(joint.name) + " listed twice");
   }
   if (model.mean.size() != n)
     throw InputError(source, at(Part::Mean, 0),
@@ -60,7 +62,7 @@ void validate(const SynergyModel& model, const std::string& source, const Locate
   for (const auto& name : model.ownAxisJoints) {
     const int index = model.jointIndex(name);
     if (index < 0)
-      throw InputError(source, at(Part::OwnAxis, 0), "own-axis joint '" + name + "' is not among the joints");
+      throw InputError(source, at(Part::OwnAxis, 0), "own-axis joint " + quotedText(name) + " is not among the joints");
     ownAxis.push_back(index);
   }
   const auto d = model.directionCount();

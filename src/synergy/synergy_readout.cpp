@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/synergy/synergy_projection.hpp"
 
 namespace pmdplan {
@@ -15,7 +16,7 @@ std::vector<int> modelJointSlots(const SynergyModel& model, const RobotModel& ro
     const int slot = robot.activeIndex(joint.name);
     if (slot < 0)
       throw InputError(modelFile, "joints",
-                       "joint '" + joint.name + "' is not an active joint of robot '" + robot.name() +
+                       "joint " + quotedText(joint.name) + " is not an active joint of robot '" + robot.name() +
                            "' (is the synergy model for another hand?)");
     slots.push_back(slot);
   }

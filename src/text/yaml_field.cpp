@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/text/number_text.hpp"
+#include "yaml_document_check.hpp"
 
 namespace pmdplan {
 namespace {
@@ -16,16 +18,9 @@ int oneBasedLine(const YAML::Node& node) {
   return mark.line >= 0 ? mark.line + 1 : 0;
 }
 
-/// Short values are quoted; a long one (a whole other file read by mistake) is only measured, so
-/// an error never shows a file's contents.
-std::string quoted(std::string_view text) {
-  if (text.size() > 40 || text.find('\n') != std::string_view::npos)
-    return "a text of " + std::to_string(text.size()) + " characters";
-  std::string result(1, '\'');  // built by appending: GCC 12 warns falsely on "'" + string
-  result.append(text);
-  result.push_back('\'');
-  return result;
-}
+/// A value in a message (message_text.hpp): a long one is only measured, so an error never shows a
+/// file's contents, and nothing is printed raw.
+std::string quoted(std::string_view text) { return quotedText(text); }
 
 std::string describeNode(const YAML::Node& node) {
   switch (node.Type()) {
@@ -42,31 +37,6 @@ std::string describeNode(const YAML::Node& node) {
   }
 }
 
-constexpr std::size_t kMaxYamlNodes = 10'000'000;
-
-}  // namespace
-
-/// yaml-cpp keeps both entries of a repeated key and answers lookups with the first: every map of
-/// the document is read through mapEntries, which refuses them, naming the field path.
-void rejectRepeatedKeys(const YamlField& root) {
-  std::vector<YamlField> pending{root};
-  std::size_t visited = 0;
-  while (!pending.empty()) {
-    if (++visited > kMaxYamlNodes)  // aliases can repeat a subtree exponentially often
-      throw InputError(
-          root.file(), "document",
-          "more than " + std::to_string(kMaxYamlNodes) + " values (through aliases?), the most pmdplan reads");
-    const YamlField current = pending.back();
-    pending.pop_back();
-    if (current.node().IsSequence())
-      for (YamlField& item : current.elements("a list")) pending.push_back(std::move(item));
-    if (current.node().IsMap())
-      for (auto& entry : current.mapEntries("a map")) pending.push_back(std::move(entry.second));
-  }
-}
-
-namespace {
-
 std::string joinKeys(std::initializer_list<std::string_view> keys) {
   std::string joined;
   for (const auto key : keys) joined += (joined.empty() ? "" : ", ") + std::string(key);
@@ -76,22 +46,23 @@ std::string joinKeys(std::initializer_list<std::string_view> keys) {
 }  // namespace
 
 std::string joinFieldPath(const std::string& parent, std::string_view key) {
-  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+  const std::string step = fieldKeyText(key);
+  return parent.empty() ? step : parent + "." + step;
 }
 
 YAML::Node parseYamlDocument(std::string_view text, const std::string& file) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
     throw InputError(file, "line 1", "empty file; expected a YAML document");
-  YAML::Node root;
+  // Checked as written first: yaml-cpp would build a cycle from an alias inside its own anchor,
+  // and every walk of the nodes would then go round it for ever.
+  checkYamlDocument(text, file);
   try {
-    root = YAML::Load(std::string(text));
+    return YAML::Load(std::string(text));
   } catch (const YAML::Exception& error) {
     throw InputError(
         file, "line " + std::to_string(error.mark.line + 1) + ", column " + std::to_string(error.mark.column + 1),
         "YAML syntax error: " + error.msg);
   }
-  rejectRepeatedKeys(YamlField(file, root));
-  return root;
 }
 
 YamlField parseYamlFile(std::string_view text, const std::string& file, std::string_view format,
@@ -152,8 +123,8 @@ void YamlField::requireMapWithKeys(std::initializer_list<std::string_view> allow
     for (const auto candidate : allowed) known = known || key.Scalar() == candidate;
     if (!known) {
       at(joinFieldPath(path_, key.Scalar()), key)
-          .fail(unknownKeyLabel + " '" + key.Scalar() + "'; expected " + expected + " (keys: " + joinKeys(allowed) +
-                ")");
+          .fail(unknownKeyLabel + " " + quoted(key.Scalar()) + "; expected " + expected +
+                " (keys: " + joinKeys(allowed) + ")");
     }
   }
   mapEntries(expected);  // rejects repeated and non-scalar keys

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "pmdplan/core/atomic_file.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/text/yaml_field.hpp"
 
 namespace pmdplan {
@@ -43,7 +44,7 @@ std::map<std::string, FileLimit> readLimitsFile(const RobotModel& robot, const s
   for (const auto& [name, entry] : root.child("joint_limits", "a map of joint names").mapEntries("a map of joints")) {
     const int index = robot.jointIndex(name);
     if (index < 0 || robot.joints()[static_cast<std::size_t>(index)].type == JointType::Fixed)
-      entry.fail("'" + name + "' is not a moving joint of robot " + robot.name());
+      entry.fail(quotedText(name) + " is not a moving joint of robot " + robot.name());
     entry.requireMapWithKeys(
         {"has_velocity_limits", "max_velocity", "has_acceleration_limits", "max_acceleration", "has_position_limits",
          "min_position", "max_position", "has_jerk_limits", "max_jerk", "has_effort_limits", "max_effort"},

@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace pmdplan {
 namespace {
@@ -23,9 +24,16 @@ struct Switch {
 
 class Integrator {
  public:
-  Integrator(const PhasePlane& plane, double timeStep) : plane_(plane), path_(plane.path()), dt_(timeStep) {
+  Integrator(const PhasePlane& plane, const PhaseProfileSettings& settings)
+      : plane_(plane), path_(plane.path()), dt_(settings.timeStep), maxSteps_(settings.maxSteps) {
     for (const auto& point : path_.switchingPoints())
       if (point.discontinuity) discontinuities_.push_back(point.s);
+  }
+
+  void countStep() {
+    if (++steps_ > maxSteps_)
+      throw std::runtime_error("time-optimal parameterisation: more than " + std::to_string(maxSteps_) +
+                               " integration steps");
   }
 
   std::vector<PhasePoint> run() {
@@ -67,6 +75,7 @@ class Integrator {
   bool forward() {
     const double length = path_.length();
     while (true) {
+      countStep();
       const PhasePoint p = points_.back();
       const double speed = std::sqrt(p.speedSquared);
       auto [lowest, highest] = plane_.accelerationRange(p.s, speed);
@@ -253,6 +262,7 @@ class Integrator {
   void backward(const PhasePoint& start, std::optional<double> firstAcceleration) {
     std::vector<PhasePoint> curve{start};
     while (true) {
+      countStep();
       const PhasePoint c = curve.back();
       const double speed = std::sqrt(c.speedSquared);
       const double lowest = firstAcceleration ? *firstAcceleration : plane_.accelerationRange(c.s, speed, true).first;
@@ -314,6 +324,8 @@ class Integrator {
   const PhasePlane& plane_;
   const BlendedPath& path_;
   double dt_;
+  long maxSteps_;
+  long steps_ = 0;
   std::vector<double> discontinuities_;
   std::vector<PhasePoint> points_;
   std::optional<double> firstForward_;
@@ -324,7 +336,7 @@ class Integrator {
 
 std::vector<PhasePoint> timeOptimalProfile(const PhasePlane& plane, const PhaseProfileSettings& settings) {
   if (!(settings.timeStep > 0.0)) throw std::invalid_argument("the integration time step must be positive");
-  return Integrator(plane, settings.timeStep).run();
+  return Integrator(plane, settings).run();
 }
 
 }  // namespace pmdplan

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "pmdplan/core/input_error.hpp"
@@ -9,19 +11,82 @@
 namespace pmdplan {
 
 void TimingSettings::check() const {
-  if (!(std::isfinite(blendTolerance) && blendTolerance >= 0.0))
-    throw InputError("", "blend-tolerance", "expected a number of radians >= 0");
-  if (!(velocityScale > 0.0 && velocityScale <= 1.0))
-    throw InputError("", "velocity-scale", "expected a fraction in (0, 1]");
-  if (!(accelerationScale > 0.0 && accelerationScale <= 1.0))
-    throw InputError("", "acceleration-scale", "expected a fraction in (0, 1]");
+  using B = TimingBounds;
+  if (!(blendTolerance == 0.0 ||
+        (blendTolerance >= B::kSmallestBlendTolerance && blendTolerance <= B::kLargestBlendTolerance)))
+    throw InputError("", "blend-tolerance", "expected 0 (stop at every waypoint) or radians from 0.001 to 1");
+  if (!(velocityScale >= B::kSmallestScale && velocityScale <= 1.0))
+    throw InputError("", "velocity-scale", "expected a fraction from 0.01 to 1");
+  if (!(accelerationScale >= B::kSmallestScale && accelerationScale <= 1.0))
+    throw InputError("", "acceleration-scale", "expected a fraction from 0.01 to 1");
   if (!(timeStep > 0.0 && timeStep <= 0.1)) throw InputError("", "time-step", "expected seconds in (0, 0.1]");
+}
+
+double restToRestDuration(const std::vector<Configuration>& waypoints, const std::vector<JointMotionLimit>& limits,
+                          const TimingSettings& settings) {
+  double duration = 0.0;
+  for (std::size_t k = 1; k < waypoints.size(); ++k) {
+    const Eigen::VectorXd step = waypoints[k] - waypoints[k - 1];
+    const double length = step.norm();
+    if (!(length > 0.0)) continue;
+    // Along the unit direction x the path speed is bounded by min vᵢ/|xᵢ| and its acceleration by
+    // min aᵢ/|xᵢ|: a trapezoid (or a triangle when the segment is too short to reach the speed).
+    double speed = std::numeric_limits<double>::infinity(), acceleration = speed;
+    for (std::size_t j = 0; j < limits.size(); ++j) {
+      const double share = std::abs(step[static_cast<Eigen::Index>(j)]) / length;
+      if (share == 0.0) continue;
+      speed = std::min(speed, limits[j].velocity * settings.velocityScale / share);
+      acceleration = std::min(acceleration, limits[j].acceleration * settings.accelerationScale / share);
+    }
+    duration += length >= speed * speed / acceleration ? length / speed + speed / acceleration
+                                                       : 2.0 * std::sqrt(length / acceleration);
+  }
+  return duration;
+}
+
+void checkTimingWork(const std::vector<Configuration>& waypoints, const std::vector<JointMotionLimit>& limits,
+                     const TimingSettings& settings) {
+  const double duration = restToRestDuration(waypoints, limits, settings);
+  const double longest = TimingBounds::kMaxIntegrationSteps * settings.timeStep;
+  if (!(duration <= longest)) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "the path takes about %.4g s at these limits (at rest at every waypoint); expected at most %g s "
+                  "(%g integration steps of %g s): raise the velocity and acceleration limits or their scales",
+                  duration, longest, TimingBounds::kMaxIntegrationSteps, settings.timeStep);
+    throw InputError("", "duration", text);
+  }
+}
+
+bool keepsLimits(const TimedPath& timed, const std::vector<JointMotionLimit>& limits, const TimingSettings& settings) {
+  constexpr double kInterval = 0.001, kVelocitySlack = 1e-3, kAccelerationSlack = 1e-2;
+  TimedState previous = timed.at(0.0);
+  const auto steps = static_cast<long>(std::ceil(timed.duration() / kInterval));
+  for (long k = 1; k <= steps; ++k) {
+    const TimedState state = timed.at(static_cast<double>(k) * kInterval);
+    const double dt = state.time - previous.time;
+    for (std::size_t j = 0; j < limits.size(); ++j) {
+      const auto i = static_cast<Eigen::Index>(j);
+      const double velocity = limits[j].velocity * settings.velocityScale;
+      const double acceleration = limits[j].acceleration * settings.accelerationScale;
+      if (!(std::abs(state.velocity[i]) <= velocity * (1.0 + kVelocitySlack))) return false;
+      if (dt > 0.0 && !(std::abs(state.velocity[i] - previous.velocity[i]) <=
+                        acceleration * (1.0 + kAccelerationSlack) * dt + 1e-12))
+        return false;
+    }
+    previous = state;
+  }
+  return true;
 }
 
 TimedPath::TimedPath(const std::vector<Configuration>& waypoints, const std::vector<JointMotionLimit>& limits,
                      const TimingSettings& settings) {
   settings.check();
   if (waypoints.empty()) throw std::invalid_argument("a timed path needs at least one waypoint");
+  for (const auto& q : waypoints)
+    if (q.size() != static_cast<Eigen::Index>(limits.size()))
+      throw std::invalid_argument("a waypoint's size differs from the limits'");
+  checkTimingWork(waypoints, limits, settings);
   std::vector<Configuration> distinct{waypoints.front()};
   for (const auto& q : waypoints) {
     if (q.size() != static_cast<Eigen::Index>(limits.size()))

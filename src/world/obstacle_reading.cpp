@@ -49,6 +49,11 @@ Shape readMesh(const YamlField& field, const std::filesystem::path& taskDirector
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
   if (const auto scaleField = field.optionalChild("scale")) {
     scale = scaleField->positiveVector3("scale factors [x, y, z], each greater than 0");
+    // Before the mesh is read; the part ".mesh.scale[i]" becomes "[i]" of the scale field.
+    if (auto problem = shapeBoundsProblem(MeshShape{resolved, scale, nullptr})) {
+      problem->part = problem->part.substr(problem->part.find('['));
+      failOnBoundsProblem(*scaleField, problem);
+    }
   }
   return loadMeshShape(resolved, scale);
 }
@@ -85,6 +90,7 @@ Obstacle readObstacle(const YamlField& field, const std::filesystem::path& taskD
     obstacle.shape = readSphere(*shapeField);
   else
     obstacle.shape = readMesh(*shapeField, taskDirectory);
+  failOnBoundsProblem(field, shapeBoundsProblem(obstacle.shape));
 
   obstacle.pose = readPlacement(field);
   return obstacle;
@@ -95,12 +101,14 @@ Obstacle readObstacle(const YamlField& field, const std::filesystem::path& taskD
 std::vector<Obstacle> readObstacles(const YamlField& list, const std::filesystem::path& taskDirectory) {
   std::vector<Obstacle> obstacles;
   std::map<std::string, std::string> firstPath;
+  MeshTriangleBudget meshBudget("obstacle meshes of the task");
   const std::vector<YamlField> items = list.elements(std::string("a list of ") + kObstacleForm);
   if (items.size() > kMaxObstacles)
     list.fail("more than " + std::to_string(kMaxObstacles) + " obstacles (" + std::to_string(items.size()) +
               "), the most a task may have");
   for (const YamlField& item : items) {
     Obstacle obstacle = readObstacle(item, taskDirectory);
+    if (const auto* mesh = std::get_if<MeshShape>(&obstacle.shape)) meshBudget.add(*mesh, item.file(), item.location());
     if (const auto previous = firstPath.find(obstacle.name); previous != firstPath.end()) {
       item.child("name", "")
           .fail("obstacle name '" + obstacle.name + "' is already used by " + previous->second +

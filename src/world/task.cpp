@@ -1,5 +1,7 @@
 #include "pmdplan/world/task.hpp"
 
+#include <cstdio>
+
 #include "joint_values_reading.hpp"
 #include "obstacle_reading.hpp"
 #include "placement_reading.hpp"
@@ -48,6 +50,28 @@ std::shared_ptr<const RobotModel> readRobot(const YamlField& field, const std::f
 
 }  // namespace
 
+std::string taskNameProblem(const std::string& name) {
+  const std::string form =
+      "expected a plain task name (letters, digits, '_', '-' and '.', not starting with '.', at most " +
+      std::to_string(kMaxTaskNameLength) + " characters)";
+  if (name.empty()) return form + ", got an empty one";
+  if (name.size() > kMaxTaskNameLength) return form + ", got a name of " + std::to_string(name.size()) + " characters";
+  if (name.front() == '.') return form + ", got a name starting with '.'";
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.')
+      continue;
+    char shown[8];
+    if (c > 0x20 && c < 0x7f)
+      std::snprintf(shown, sizeof shown, "'%c'", c);
+    else
+      std::snprintf(shown, sizeof shown, "\\x%02X", c);
+    return form + ", got a name of " + std::to_string(name.size()) + " characters with " + shown + " at character " +
+           std::to_string(i + 1);
+  }
+  return "";
+}
+
 const Obstacle* Task::findObstacle(const std::string& obstacleName) const {
   for (const Obstacle& obstacle : obstacles) {
     if (obstacle.name == obstacleName) return &obstacle;
@@ -73,7 +97,7 @@ Task loadTask(const std::filesystem::path& file, const BuiltInRobotLoader& loadB
   task.file = file;
   const YamlField nameField = root.child("name", "the task name");
   task.name = nameField.text("the task name");
-  if (task.name.empty()) nameField.fail("expected the task name, got an empty string");
+  if (const std::string problem = taskNameProblem(task.name); !problem.empty()) nameField.fail(problem);
   if (const auto description = root.optionalChild("description")) {
     task.description = description->text("a one-line description");
   }

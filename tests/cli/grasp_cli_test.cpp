@@ -264,8 +264,8 @@ TEST(GraspCli, BenchPlansAGraspGoalWithOurPlannersAndOmplsAndValidatesEveryRun) 
   EXPECT_EQ(files, 6u);
 }
 
-const std::filesystem::path kSourceTree = std::filesystem::path(PMDPLAN_TEST_DATA_DIR).parent_path();
-const std::filesystem::path kBuildDirectory = std::filesystem::path(PMDPLAN_CLI_PATH).parent_path();
+using test::kBuildDirectory;
+using test::kSourceTree;
 
 TEST(ViewerBrowser, DrawsAGraspsClosingContactAsAllowedContactAndAnotherObstacleAsACollision) {
   ASSERT_TRUE(std::filesystem::exists(kSourceTree / "viewer" / "node_modules" / "playwright-core"))

@@ -148,7 +148,7 @@ TEST(HostileInput, HugeFrameCountsAndEndlessFilesAreRefused) {
   for (const std::string frames : {"10000000", "2147483647"})
     expectBadInput(dir, "glove synth --frames " + frames + " -o " + quoted(dir.path() / "x.csv"),
                    {"--frames", "1000000"});
-  expectBadInput(dir, "check /dev/zero", {"/dev/zero", "MiB"});
+  expectBadInput(dir, "check /dev/zero", {"/dev/zero", "not a regular file"});  // a device (endless pipes: OutputRule)
   expectBadInput(dir, "synergies /dev/zero --format csv --calibration /dev/zero", {"/dev/zero"});
 }
 
@@ -218,17 +218,11 @@ TEST(HostileInput, CoefficientsThatOverflowNeverReachThePca) {
                  {"thumb_proximal", "not a finite number"});
 }
 
-/// A path file planned for can_on_table, for the path-file reproducers.
-std::filesystem::path plannedPath(const test::TempDir& dir) {
-  const auto path = dir.path() / "good.path.json";
-  const auto result = runCli(dir, "plan can_on_table --seed 1 -o " + quoted(path));
-  EXPECT_EQ(result.exitCode, 0) << result.err;
-  return path;
-}
+using test::plannedPath;
 
 TEST(HostileInput, PathFilesWithOverflowingNumbersOrForeignTasksAreBadInput) {
   test::TempDir dir;
-  const std::string good = test::contents(plannedPath(dir));
+  const std::string good = test::contents(plannedPath(dir, "good.path.json"));
   const auto overflow =
       dir.write("overflow.json", std::regex_replace(good, std::regex("\"seed\": *[0-9]+"), "\"seed\": 1e309"));
   expectBadInput(dir, "validate can_on_table " + quoted(overflow), {"overflow.json", "a number is out of range"});

@@ -14,8 +14,8 @@ namespace {
 
 using test::quoted;
 
-const std::filesystem::path kSourceTree = std::filesystem::path(PMDPLAN_TEST_DATA_DIR).parent_path();
-const std::filesystem::path kBuildDirectory = std::filesystem::path(PMDPLAN_CLI_PATH).parent_path();
+using test::kBuildDirectory;
+using test::kSourceTree;
 
 TEST(LiveGloveBrowser, APseudoTerminalGloveMovesTheHandOnThePage) {
   ASSERT_TRUE(std::filesystem::exists(kSourceTree / "viewer" / "node_modules" / "playwright-core"))

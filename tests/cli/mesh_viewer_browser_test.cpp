@@ -16,8 +16,8 @@ namespace {
 using test::quoted;
 using test::runCli;
 
-const std::filesystem::path kSourceTree = std::filesystem::path(PMDPLAN_TEST_DATA_DIR).parent_path();
-const std::filesystem::path kBuildDirectory = std::filesystem::path(PMDPLAN_CLI_PATH).parent_path();
+const std::filesystem::path kMeshViewerSourceTree = std::filesystem::path(PMDPLAN_TEST_DATA_DIR).parent_path();
+const std::filesystem::path kMeshViewerBuildDirectory = std::filesystem::path(PMDPLAN_CLI_PATH).parent_path();
 
 int run(const std::string& command) {
   std::cout << "$ " << command << std::endl;
@@ -26,12 +26,14 @@ int run(const std::string& command) {
 }
 
 TEST(ViewerBrowser, ShowsARobotMadeOfMeshesAndFallsBackToItsCollisionGeometry) {
-  ASSERT_TRUE(std::filesystem::exists(kSourceTree / "viewer" / "node_modules" / "playwright-core"))
+  ASSERT_TRUE(std::filesystem::exists(kMeshViewerSourceTree / "viewer" / "node_modules" / "playwright-core"))
       << "viewer/node_modules is missing: run scripts/install-deps (npm ci in viewer/)";
-  const auto work = kBuildDirectory / "test-output" / "mesh-viewer";
+  const auto work = kMeshViewerBuildDirectory / "test-output" / "mesh-viewer";
   std::filesystem::remove_all(work);
   std::filesystem::create_directories(work);
-  ASSERT_EQ(run("python3 " + quoted(kSourceTree / "docs" / "examples" / "make_toy_hand.py") + " " + quoted(work)), 0);
+  ASSERT_EQ(
+      run("python3 " + quoted(kMeshViewerSourceTree / "docs" / "examples" / "make_toy_hand.py") + " " + quoted(work)),
+      0);
   const std::string packages = " --package-path " + quoted(work);
   ASSERT_EQ(runCli("robot init package://toy_hand/urdf/toy_hand.urdf" + packages +
                    " --arm arm_yaw,arm_shoulder,arm_elbow,arm_wrist --palm palm --samples 1000")
@@ -50,9 +52,9 @@ TEST(ViewerBrowser, ShowsARobotMadeOfMeshesAndFallsBackToItsCollisionGeometry) {
   const auto planned =
       runCli("plan " + quoted(work / "task.yaml") + packages + " --planner full --time-limit 30 -o " + quoted(path));
   ASSERT_EQ(planned.exitCode, 0) << planned.out << planned.err;
-  EXPECT_EQ(run("node " + quoted(kSourceTree / "viewer" / "test" / "mesh_robot_browser_test.mjs") + " --cli " +
-                quoted(PMDPLAN_CLI_PATH) + " --path " + quoted(path) + " --task " + quoted(work / "task.yaml") +
-                packages + " --work " + quoted(work)),
+  EXPECT_EQ(run("node " + quoted(kMeshViewerSourceTree / "viewer" / "test" / "mesh_robot_browser_test.mjs") +
+                " --cli " + quoted(PMDPLAN_CLI_PATH) + " --path " + quoted(path) + " --task " +
+                quoted(work / "task.yaml") + packages + " --work " + quoted(work)),
             0);
   EXPECT_TRUE(std::filesystem::is_regular_file(work / "mesh-robot.png"));
 }

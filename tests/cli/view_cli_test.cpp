@@ -30,8 +30,8 @@ namespace {
 using test::runCli;
 using ::testing::HasSubstr;
 
-const std::filesystem::path kSourceTree = std::filesystem::path(PMDPLAN_TEST_DATA_DIR).parent_path();
-const std::filesystem::path kBuildDirectory = std::filesystem::path(PMDPLAN_CLI_PATH).parent_path();
+using test::kBuildDirectory;
+using test::kSourceTree;
 
 using test::contents;
 using test::quoted;

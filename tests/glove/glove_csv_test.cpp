@@ -80,6 +80,34 @@ TEST(GloveCsv, RawValueOutsideTheByteRangeNamesLineAndColumn) {
                          "outside the raw sensor range");
 }
 
+// A spreadsheet's UTF-8 export starts with a byte order mark: an encoding marker, not part of the
+// first column's name (it was an invisible "unknown column 'time_s'"). One inside is shown escaped.
+TEST(GloveCsv, ALeadingByteOrderMarkIsAnEncodingMarker) {
+  const auto recording = parseGloveCsv("\xef\xbb\xbf" + header() + row("0", 1), "rec.csv");
+  EXPECT_EQ(recording.frameCount(), 1);
+  EXPECT_EQ(recording.timeS, std::vector<double>{0.0});
+  EXPECT_EQ(parseGloveCsv("\xef\xbb\xbf# a note\n" + header() + row("0", 1), "rec.csv").notes,
+            std::vector<std::string>{"a note"});
+  test::expectInputError([] { parseGloveCsv("time_s,\xef\xbb\xbf" + header(false) + row("0", 1), "rec.csv"); },
+                         "rec.csv", "line 1, column 2", "unknown column '\\ufeffThumbRotate'");
+}
+
+// A header cell is shown only when short and escaped: never a line of another file.
+TEST(GloveCsv, AnUnknownColumnIsMeasuredOrEscapedNeverShownRaw) {
+  const std::string secret = "root:$6$saltsalt$" + std::string(86, 'h') + ":19000:0:99999:7:::";
+  try {
+    parseGloveCsv(secret + "\n" + row("0", 1), "rec.csv");
+    ADD_FAILURE() << "an unknown column was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).find("saltsalt"), std::string::npos) << error.what();
+    EXPECT_NE(error.message().find("unknown column a text of 122 characters"), std::string::npos) << error.what();
+  }
+  test::expectInputError([] { parseGloveCsv("\x1b[2J" + header() + row("0", 1), "rec.csv"); }, "rec.csv",
+                         "line 1, column 1", "unknown column '\\x1b[2Jtime_s'");
+  test::expectInputError([&] { parseGloveCsv(header() + "\x1b[2J" + row("0", 1), "rec.csv"); }, "rec.csv",
+                         "line 2, column time_s", "'\\x1b[2J0' is not a time");
+}
+
 TEST(GloveCsv, BadTimeNamesTheColumn) {
   test::expectInputError([] { parseGloveCsv(header() + row("soon", 1), "rec.csv"); }, "rec.csv",
                          "line 2, column time_s", "not a time");

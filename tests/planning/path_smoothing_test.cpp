@@ -135,5 +135,28 @@ TEST(PathSmoothing, ShortPathsAreReturnedAsTheyAre) {
   EXPECT_TRUE(smoothPath({}, unitSquare(), motion).empty());
 }
 
+// Bounded work: a path of many nodes (a tiny planner step makes them) is smoothed in windows, each
+// at most kMaxSmoothingWindowNodes nodes, so the tables never grow with the square of the path.
+TEST(PathSmoothing, ALongPathIsSmoothedWindowByWindow) {
+  const std::size_t n = 2 * kMaxSmoothingWindowNodes + 10;
+  std::vector<Configuration> path;
+  for (std::size_t i = 0; i < n; ++i)
+    path.push_back(Eigen::Vector2d(0.05 + 0.9 * double(i) / double(n - 1), i % 2 == 0 ? 0.4 : 0.6));
+  BoxesMotionValidator motion;  // no obstacle: each window collapses to its two ends
+  const std::vector<std::size_t> kept = shortcutPathIndices(path, unitSquare(), motion);
+  EXPECT_EQ(kept, (std::vector<std::size_t>{0, kMaxSmoothingWindowNodes - 1, 2 * kMaxSmoothingWindowNodes - 2, n - 1}));
+}
+
+// A stop (the run's deadline, Ctrl-C in Python) ends the smoothing at once with a path over the
+// edges known to be free; before, it went on checking edges for as long as they took.
+TEST(PathSmoothing, AStopKeepsOnlyEdgesAlreadyChecked) {
+  const std::vector<Configuration> path = {Eigen::Vector2d(0.1, 0.1), Eigen::Vector2d(0.5, 0.9),
+                                           Eigen::Vector2d(0.9, 0.1)};
+  BoxesMotionValidator motion;
+  EXPECT_EQ(shortcutPathIndices(path, unitSquare(), motion, [] { return true; }), (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(motion.calls, 0u);
+  EXPECT_EQ(shortcutPathIndices(path, unitSquare(), motion, [] { return false; }), (std::vector<std::size_t>{0, 2}));
+}
+
 }  // namespace
 }  // namespace pmdplan

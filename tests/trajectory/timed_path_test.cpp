@@ -8,8 +8,9 @@
 
 #include <cmath>
 
-#include "pmdplan/core/random_source.hpp"
+#include "pmdplan/core/input_error.hpp"
 #include "pmdplan/trajectory/joint_trajectory.hpp"
+#include "random_timing_case.hpp"
 #include "support/sanitizer_build.hpp"
 
 namespace pmdplan {
@@ -27,25 +28,8 @@ double distanceToPolyline(const Eigen::VectorXd& q, const std::vector<Configurat
   return best;
 }
 
-struct RandomCase {
-  std::vector<Configuration> waypoints;
-  std::vector<JointMotionLimit> limits;
-};
-
-RandomCase randomCase(std::uint64_t seed) {
-  RandomSource random(seed);
-  const int dof = 2 + static_cast<int>(random.uniform01() * 6);
-  const int count = 2 + static_cast<int>(random.uniform01() * 8);
-  RandomCase c;
-  for (int j = 0; j < dof; ++j)
-    c.limits.push_back({"j" + std::to_string(j), random.uniform(0.5, 7.0), random.uniform(1.0, 20.0)});
-  for (int k = 0; k < count; ++k) {
-    Configuration q(dof);
-    for (int j = 0; j < dof; ++j) q[j] = random.uniform(-2.0, 2.0);
-    c.waypoints.push_back(q);
-  }
-  return c;
-}
+using test::TimingCase;
+using test::timingCase;
 
 TEST(TimedPath, RandomPathsKeepEveryLimitAndTheBlendingTolerance) {
   // The profile's acceleration is chosen at one end of each 0.2 ms integration step: inside a step
@@ -53,7 +37,7 @@ TEST(TimedPath, RandomPathsKeepEveryLimitAndTheBlendingTolerance) {
   // velocity between two points on the velocity limit curve by a few parts in a hundred thousand.
   constexpr double kVelocitySlack = 1e-4, kAccelerationSlack = 5e-3;
   for (std::uint64_t seed = 1; seed <= test::trials(60, 15); ++seed) {
-    const RandomCase c = randomCase(seed);
+    const TimingCase c = timingCase(seed);
     TimingSettings settings;
     settings.blendTolerance = seed % 3 == 0 ? 0.0 : 0.05 * static_cast<double>(seed % 5 + 1);
     const TimedPath timed(c.waypoints, c.limits, settings);
@@ -123,14 +107,14 @@ TEST(TimedPath, AReversalIsPassedAtRest) {
 }
 
 TEST(JointTrajectory, SamplesAtTheIntervalAndEndsAtTheDuration) {
-  const RandomCase c = randomCase(7);
+  const TimingCase c = timingCase(7);
   const TimedPath timed(c.waypoints, c.limits);
   const JointTrajectory trajectory = sampleTrajectory(timed, {}, 0.01);
   ASSERT_GE(trajectory.points.size(), 2u);
   for (std::size_t k = 1; k + 1 < trajectory.points.size(); ++k)
     EXPECT_NEAR(trajectory.points[k].time - trajectory.points[k - 1].time, 0.01, 1e-12);
   EXPECT_DOUBLE_EQ(trajectory.points.back().time, timed.duration());
-  EXPECT_THROW(sampleTrajectory(timed, {}, 0.0), std::invalid_argument);
+  EXPECT_THROW(sampleTrajectory(timed, {}, 0.0), InputError);
 }
 
 }  // namespace

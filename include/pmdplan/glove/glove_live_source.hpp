@@ -46,7 +46,16 @@ class GloveLiveSource {
 
 std::unique_ptr<GloveLiveSource> openGloveDevice(const std::string& path, const GloveDeviceSettings& settings);
 
+/// Replay speeds accepted (--speed): 0.01 to 100 times as recorded.
+inline constexpr double kSmallestReplaySpeed = 0.01;
+inline constexpr double kLargestReplaySpeed = 100.0;
+/// The longest wait between two replayed frames as recorded (s): a longer gap in time_s (a typo such
+/// as 1e9, 31 years) is an error, as is a time that goes back.
+inline constexpr double kLongestReplayGapS = 60.0;
+
 /// Plays `recording` at its time_s column (or at `rateHz` without one), times scaled by 1/`speed`.
+/// Throws InputError naming the file and line of a time_s that goes back or jumps more than
+/// kLongestReplayGapS ahead, before any frame plays.
 std::unique_ptr<GloveLiveSource> replayGloveRecording(GloveRecording recording, double rateHz, double speed);
 
 }  // namespace pmdplan

@@ -12,6 +12,8 @@ struct GloveRecording {
   std::vector<GloveFrame> frames;
   /// Sample times in seconds, one per frame; empty when the source has no time column.
   std::vector<double> timeS;
+  /// The source line of each frame (a CSV's line numbers, for messages); empty for other sources.
+  std::vector<int> frameLines;
   /// Comment lines of the source ('#' lines of a CSV, without the '#'), e.g. the synthetic
   /// operator's notice that the data is not human.
   std::vector<std::string> notes;

@@ -24,11 +24,14 @@ class PlannerRun {
  public:
   /// Starts the clock; a finite time limit (seconds) sets the deadline.
   void begin(double timeLimit, const MotionValidator& motionValidator);
+  /// The deadline has passed, or the caller asked to stop (core/stop_request.hpp).
   bool timeIsUp() const;
   double elapsedSeconds() const;
 
   /// The path the search found, smoothed if asked (Sect. 5.3); records the planning time, the
-  /// smoothing time and the path's size and length before and after.
+  /// smoothing time and the path's size and length before and after. The smoothing keeps to the
+  /// run's deadline too: past it, only edges already checked are used (path_smoothing.hpp), so a
+  /// time limit bounds the whole call.
   std::vector<Configuration> finishPath(const std::vector<Configuration>& found, const PlanningSpace& space,
                                         MotionValidator& motionValidator, bool smooth,
                                         PlanningStatistics& statistics) const;

@@ -64,12 +64,14 @@ class YamlField {
   int line_ = 0;
 };
 
-/// Joins a parent field path and a key: "" + "base" = "base", "base" + "xyz" = "base.xyz".
+/// Joins a parent field path and a key: "" + "base" = "base", "base" + "xyz" = "base.xyz"; a key
+/// from a file is shown as message_text.hpp's fieldKeyText shows it (escaped, or measured if long).
 std::string joinFieldPath(const std::string& parent, std::string_view key);
 
 /// The one way our YAML files are loaded: an InputError naming `file` for an empty text ("line 1"),
-/// a syntax error ("line N, column M"), a key given twice in any map (its field path and line) or
-/// a document that aliases make larger than pmdplan reads.
+/// a syntax error ("line N, column M"), a key given twice in any map (its field path and line), an
+/// alias inside the value it names (a cycle) or a document that aliases make larger or deeper than
+/// pmdplan reads (src/text/yaml_document_check.hpp).
 YAML::Node parseYamlDocument(std::string_view text, const std::string& file);
 
 /// The root of one of pmdplan's own files (calibration, mapping, synergy model, ...): the document
@@ -77,8 +79,5 @@ YAML::Node parseYamlDocument(std::string_view text, const std::string& file);
 /// but, where given, `format` and 1. `expected` describes the file for the messages.
 YamlField parseYamlFile(std::string_view text, const std::string& file, std::string_view format,
                         std::initializer_list<std::string_view> keys, const std::string& expected);
-
-/// Throws unless no map below `root` repeats a key (parseYamlDocument calls it).
-void rejectRepeatedKeys(const YamlField& root);
 
 }  // namespace pmdplan

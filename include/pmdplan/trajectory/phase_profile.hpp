@@ -23,6 +23,10 @@ struct PhasePoint {
 struct PhaseProfileSettings {
   /// Integration time step (s).
   double timeStep = 0.0002;
+  /// Integration steps (forward and backward together) after which the integration gives up with
+  /// std::runtime_error: a backstop, since TimedPath bounds the work before it starts
+  /// (TimingBounds::kMaxIntegrationSteps, estimated from the rest-to-rest duration).
+  long maxSteps = 20'000'000;
 };
 
 /// From rest at s = 0 to rest at s = length. Throws std::runtime_error if the integration fails

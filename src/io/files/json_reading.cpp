@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/io/files/json_repeated_keys.hpp"
 
 namespace pmdplan::json_reading {
 namespace {
@@ -16,6 +17,16 @@ std::string typeName(const nlohmann::json& value) {
   if (value.is_object()) return "an object";
   if (value.is_boolean()) return "a boolean";
   return "null";
+}
+
+/// nlohmann's message without the text it read ("...; last read: 'TEXT'", "number overflow parsing
+/// 'TEXT'"): its own words and the line and column, never the file's contents.
+std::string withoutQuotedText(const std::string& message) {
+  for (const char* marker : {"; last read: '", " parsing '"}) {
+    const std::size_t at = message.find(marker);
+    if (at != std::string::npos) return message.substr(0, at);
+  }
+  return message;
 }
 
 }  // namespace
@@ -65,12 +76,13 @@ std::uint64_t readUnsigned(const nlohmann::json& value, const Place& place) {
 
 nlohmann::json parseDocument(const std::string& text, const std::string& file) {
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, refuseRepeatedJsonKeys(file));
   } catch (const nlohmann::json::parse_error& error) {
-    throw InputError(file, "", std::string("not valid JSON (") + error.what() + ")");
+    throw InputError(file, "", "not valid JSON (" + withoutQuotedText(error.what()) + ")");
   } catch (const nlohmann::json::out_of_range& error) {
     // A number no double holds (1e999): the parser stops at it.
-    throw InputError(file, "", std::string("a number is out of range; expected finite numbers (") + error.what() + ")");
+    throw InputError(file, "",
+                     "a number is out of range; expected finite numbers (" + withoutQuotedText(error.what()) + ")");
   }
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "pmdplan/core/message_text.hpp"
+
 namespace pmdplan::json_reading {
 
 /// Where a value sits: the file and the key path to it.
@@ -14,13 +16,18 @@ struct Place {
   const std::string& file;
   std::string field;
 
-  Place key(const std::string& name) const { return {file, field.empty() ? name : field + "." + name}; }
+  /// A key from the file is shown as message_text.hpp's fieldKeyText shows it.
+  Place key(const std::string& name) const {
+    const std::string step = fieldKeyText(name);
+    return {file, field.empty() ? step : field + "." + step};
+  }
   Place index(std::size_t i) const { return {file, field + "[" + std::to_string(i) + "]"}; }
   [[noreturn]] void fail(const std::string& message) const;
 };
 
-/// The parsed document; InputError naming `file` for text that is not JSON or holds a number no
-/// double holds (1e999).
+/// The parsed document; InputError naming `file` for text that is not JSON (its line and column,
+/// never the text there), holds a number no double holds (1e999) or repeats a key in one object
+/// (json_repeated_keys.hpp).
 nlohmann::json parseDocument(const std::string& text, const std::string& file);
 const nlohmann::json& requireObject(const nlohmann::json& value, const Place& place);
 const nlohmann::json& requireArray(const nlohmann::json& value, const Place& place);

@@ -7,6 +7,7 @@
 #include "json_reading.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/core/message_text.hpp"
 #include "pmdplan/io/files/json_text.hpp"
 #include "pmdplan/io/files/statistics_json.hpp"
 
@@ -98,7 +99,7 @@ PathFile parsePathFile(const std::string& text, const std::string& file) {
   for (std::size_t i = 0; i < names.size(); ++i) {
     std::string name = readString(names[i], namesPlace.index(i));
     if (name.empty()) namesPlace.index(i).fail("expected a joint name, found an empty string");
-    if (!seen.insert(name).second) namesPlace.index(i).fail("joint '" + name + "' appears twice");
+    if (!seen.insert(name).second) namesPlace.index(i).fail("joint " + quotedText(name) + " appears twice");
     path.jointNames.push_back(std::move(name));
   }
 

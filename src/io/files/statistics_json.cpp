@@ -1,6 +1,7 @@
 #include "pmdplan/io/files/statistics_json.hpp"
 
 #include "json_reading.hpp"
+#include "pmdplan/core/message_text.hpp"
 
 namespace pmdplan {
 namespace {
@@ -94,7 +95,8 @@ PlanningStatistics statisticsFromJson(const nlohmann::json& json, const std::str
       case K::Status: {
         const std::string status = readString(member(json, f.key), at);
         const auto parsed = parsePlannerStatus(status);
-        if (!parsed) at.fail("unknown status '" + status + "'; expected solved, time_limit, sample_limit, ...");
+        if (!parsed)
+          at.fail("unknown status " + quotedText(status) + "; expected solved, time_limit, sample_limit, ...");
         s.status = *parsed;
         break;
       }

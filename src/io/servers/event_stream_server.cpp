@@ -1,6 +1,5 @@
 #include "pmdplan/io/servers/event_stream_server.hpp"
 
-#include <arpa/inet.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
@@ -9,16 +8,15 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstring>
 
-#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/io/servers/http_request.hpp"
 #include "pmdplan/io/servers/static_file_server.hpp"
 
 namespace pmdplan {
 namespace {
 
 /// Sends all of `bytes` without waiting on a full socket; false if the peer cannot take them.
-bool sendNow(int connection, const std::string& bytes) {
+bool sendEventNow(int connection, const std::string& bytes) {
   std::size_t sent = 0;
   while (sent < bytes.size()) {
     const ssize_t n = ::send(connection, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
@@ -29,49 +27,64 @@ bool sendNow(int connection, const std::string& bytes) {
   return true;
 }
 
-}  // namespace
-
-EventStreamServer::EventStreamServer(std::filesystem::path root, int port) : root_(std::move(root)) {
-  socket_ = listenOnLoopback(port, port_);
-  thread_ = std::thread([this] { acceptLoop(); });
+/// True if the page hung up (or its connection failed): nothing else ever comes from a subscriber.
+bool hungUp(int connection) {
+  pollfd watch{connection, POLLIN | POLLRDHUP, 0};
+  return ::poll(&watch, 1, 0) > 0 && (watch.revents & (POLLIN | POLLRDHUP | POLLHUP | POLLERR)) != 0;
 }
 
+/// The path of a GET request ("/events" of "GET /events?x HTTP/1.1"), empty for any other request.
+std::string eventRequestPath(const HttpRequest& request) {
+  return request.method == "GET" ? request.target.substr(0, request.target.find_first_of("?#")) : std::string();
+}
+
+}  // namespace
+
+EventStreamServer::EventStreamServer(std::filesystem::path root, int port, ServerLimits limits)
+    : root_(std::move(root)), server_(port, limits, [this](LoopbackConnection& connection, const std::string& head) {
+        answer(connection, head);
+      }) {}
+
 EventStreamServer::~EventStreamServer() {
-  stopping_ = true;
-  if (thread_.joinable()) thread_.join();
-  ::close(socket_);
+  server_.stop();
   const std::lock_guard lock(mutex_);
   for (const int connection : subscribers_) ::close(connection);
 }
 
-void EventStreamServer::acceptLoop() {
-  while (!stopping_) {
-    pollfd watch{socket_, POLLIN, 0};
-    if (::poll(&watch, 1, 100) <= 0) continue;
-    const int connection = ::accept4(socket_, nullptr, nullptr, SOCK_CLOEXEC);
-    if (connection >= 0) answer(connection);
-  }
-}
-
-void EventStreamServer::answer(int connection) {
-  const std::string request = readRequestHead(connection);
-  if (requestTarget(request) != "/events") {
-    sendAll(connection, staticFileResponse(root_, request));
-    ::close(connection);
+void EventStreamServer::answer(LoopbackConnection& connection, const std::string& head) {
+  const HttpRequest request = parseHttpRequest(head);
+  if (!refusedRequestResponse(request, server_.port()).empty() || eventRequestPath(request) != "/events") {
+    sendStaticFileAnswer(connection, root_, head, server_.port());
     return;
   }
   const int yes = 1;
-  ::setsockopt(connection, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+  ::setsockopt(connection.descriptor(), IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
   const std::lock_guard lock(mutex_);
-  const std::string head =
+  dropClosedSubscribers();
+  if (static_cast<int>(subscribers_.size()) >= server_.limits().maxSubscribers) {
+    connection.send(httpTextResponse(
+        503, "Service Unavailable",
+        "too many pages follow this stream (" + std::to_string(server_.limits().maxSubscribers) + "); close one\n",
+        true, "Retry-After: 5\r\n"));
+    return;
+  }
+  const std::string answerHead =
       "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nCache-Control: no-store\r\nConnection: keep-alive\r\n\r\n"
       "retry: 1000\n\n" +
       last_;
-  if (!sendNow(connection, head)) {
-    ::close(connection);
-    return;
-  }
-  subscribers_.push_back(connection);
+  if (!sendEventNow(connection.descriptor(), answerHead)) return;
+  subscribers_.push_back(connection.descriptor());
+  connection.keep();
+}
+
+void EventStreamServer::dropClosedSubscribers() {
+  subscribers_.erase(std::remove_if(subscribers_.begin(), subscribers_.end(),
+                                    [](int connection) {
+                                      if (!hungUp(connection)) return false;
+                                      ::close(connection);
+                                      return true;
+                                    }),
+                     subscribers_.end());
 }
 
 void EventStreamServer::publish(const std::string& event, const std::string& data) {
@@ -80,7 +93,7 @@ void EventStreamServer::publish(const std::string& event, const std::string& dat
   last_ = message;
   subscribers_.erase(std::remove_if(subscribers_.begin(), subscribers_.end(),
                                     [&](int connection) {
-                                      if (sendNow(connection, message)) return false;
+                                      if (sendEventNow(connection, message)) return false;
                                       ::close(connection);
                                       return true;
                                     }),

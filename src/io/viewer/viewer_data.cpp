@@ -12,6 +12,7 @@
 #include "pmdplan/io/viewer/path_robot_match.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/io/viewer/state_clearance.hpp"
+#include "pmdplan/io/viewer/viewer_folder.hpp"
 #include "pmdplan/synergy/synergy_readout.hpp"
 
 namespace pmdplan {
@@ -73,6 +74,7 @@ Json robotMeshFiles(const RobotModel& robot, std::vector<ViewerFolderFile>& file
   for (const Link& link : robot.links())
     for (const VisualMesh& mesh : link.visualMeshes) {
       if (mesh.file.empty() || meshFiles.contains(mesh.reference)) continue;
+      if (!isViewerMeshFile(mesh.file)) continue;  // only a mesh leaves with the folder (viewer_folder.hpp)
       // Numbered, so meshes of the same file name from different packages do not overwrite each other.
       const std::string copy = "robot-meshes/" + std::to_string(meshFiles.size()) + "-" + mesh.file.filename().string();
       files.push_back({mesh.file, copy});

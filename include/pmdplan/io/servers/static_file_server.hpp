@@ -1,45 +1,51 @@
 #pragma once
 // A minimal HTTP server for one folder on the loopback interface (`pmdplan view --serve`): GET and
-// HEAD of the folder's files, one request per connection, nothing outside the folder. Enough for
+// HEAD of the folder's files (served_path.hpp's rule: nothing outside the folder, symbolic links
+// resolved), one request per connection, only for a Host naming this server (http_request.hpp),
+// several clients at once within the bounds of server_limits.hpp (loopback_server.hpp). Enough for
 // a browser on the same machine; not meant to face a network.
 #include <filesystem>
 #include <string>
 
+#include "pmdplan/io/servers/loopback_server.hpp"
+#include "pmdplan/io/servers/served_path.hpp"
+#include "pmdplan/io/servers/server_limits.hpp"
+
 namespace pmdplan {
 
-/// A listening socket on 127.0.0.1:`port` (0: a free port the system picks); `boundPort` gets the
-/// port it listens on. Throws InputError (field "--serve") if the port is out of range or cannot
-/// be bound.
-int listenOnLoopback(int port, int& boundPort);
-/// Reads a request's head from a connected socket (at most 16 KiB, waiting at most 5 s).
-std::string readRequestHead(int connection);
-/// The path a GET request asks for ("/events" of "GET /events?x HTTP/1.1"), empty for others.
-std::string requestTarget(const std::string& request);
-/// The whole HTTP response to `request` from the files of `root` (the rules above).
-std::string staticFileResponse(const std::filesystem::path& root, const std::string& request);
-/// Sends all of `bytes` on a connected socket, waiting while its buffer is full (a page's script
-/// is larger than one); stops quietly if the peer went away (there is no one left to tell).
-void sendAll(int connection, const std::string& bytes);
+/// The answer to one request of a server on `port` for the files of `root`: the response's head
+/// (or a whole short response) and, for a GET of a file, the file to send after it.
+struct StaticAnswer {
+  std::string head;
+  ServedFile file;
+  bool sendFile = false;
+};
+/// Never throws but bad_alloc (an unexpected failure is a 500 answer).
+StaticAnswer staticFileAnswer(const std::filesystem::path& root, const std::string& requestHead, int port);
+
+/// The whole HTTP response (head and every byte of the file) to `requestHead`, as the server sends it.
+std::string staticFileResponse(const std::filesystem::path& root, const std::string& requestHead, int port);
+
+/// Sends staticFileAnswer's answer on `connection` (the file in pieces, within the send deadline).
+void sendStaticFileAnswer(LoopbackConnection& connection, const std::filesystem::path& root,
+                          const std::string& requestHead, int port);
 
 class StaticFileServer {
  public:
-  /// Binds 127.0.0.1:`port` (0: a free port the system picks). Throws InputError (field
-  /// "--serve") if the port is out of range or cannot be bound.
-  StaticFileServer(std::filesystem::path root, int port);
-  ~StaticFileServer();
-  StaticFileServer(const StaticFileServer&) = delete;
-  StaticFileServer& operator=(const StaticFileServer&) = delete;
+  /// Binds 127.0.0.1:`port` (0: a free port the system picks) and answers on threads of its own
+  /// until destroyed. Throws InputError (field "--serve") if the port is out of range or cannot
+  /// be bound.
+  StaticFileServer(std::filesystem::path root, int port, ServerLimits limits = {});
 
-  int port() const { return port_; }
-  /// Answers requests until the process is stopped.
+  int port() const { return server_.port(); }
+  /// Connections being answered now.
+  int activeConnections() const { return server_.activeConnections(); }
+  /// Blocks the calling thread until the process is stopped.
   [[noreturn]] void serveForever();
-  /// Accepts and answers one request (used by tests).
-  void serveOne();
 
  private:
   std::filesystem::path root_;
-  int socket_ = -1;
-  int port_ = 0;
+  LoopbackServer server_;  // last: its threads stop before root_ goes
 };
 
 }  // namespace pmdplan
