@@ -113,7 +113,7 @@ TEST(WorkBoundsCli, ValidateRefusesAPathThatNeedsTooManyStatesBeforeCheckingIt) 
   const auto path = dir.write("alternating.path.json", document.dump());
   // 2,001 segments between far configurations: about 5·10⁶ states, minutes of checking.
   expectRefused(dir, "validate can_on_table " + quoted(path),
-                {path.string(), "points", "states", "500000", "--tolerance-mm"});
+                {path.string(), "points", "states", "400000", "--tolerance-mm"});
 }
 
 TEST(WorkBoundsCli, RobotInitRefusesANonFiniteHomeValueNamingTheJoint) {
