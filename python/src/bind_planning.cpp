@@ -192,7 +192,7 @@ py::object validate(const PyTask& task, py::handle path, double toleranceMm, std
     points = configurationsFrom(task.task->robot->activeJoints(), path, "path", false);
   }
   PathValidation validation;
-  PythonInterrupt interrupt;  // Ctrl-C stops the check between segments and raises KeyboardInterrupt
+  PythonInterrupt interrupt;  // Ctrl-C stops the check at its next state and raises KeyboardInterrupt
   try {
     py::gil_scoped_release release;
     ExactCollisionChecker checker(*task.task);

@@ -56,12 +56,17 @@ PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker
     fail("the closing phase must start after the first point and before the last");
   if (!result.valid) return result;
   checkValidationWork(segments, path);
-  const auto closingCheck = [&](const Configuration& q) { return closing->rule->forbidden(checker.check(q)); };
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+  // A stop request (core/stop_request.hpp) is looked at before every state: one segment may need
+  // thousands of them.
+  const auto approachCheck = [&](const Configuration& q) {
     if (stopRequested()) throw StopRequested();
+    return checker.check(q);
+  };
+  const auto closingCheck = [&](const Configuration& q) { return closing->rule->forbidden(approachCheck(q)); };
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     const bool closingSegment = closing && i >= closing->from;
     const auto inspection = closingSegment ? segments.inspect(closingCheck, path[i], path[i + 1])
-                                           : segments.inspect(checker, path[i], path[i + 1]);
+                                           : segments.inspect(approachCheck, path[i], path[i + 1]);
     result.statesChecked += inspection.statesChecked;
     if (inspection.free) continue;
     char where[200];

@@ -42,7 +42,7 @@ long checkValidationWork(const SegmentChecker& segments, const std::vector<Confi
 /// Before `closing->from` (or everywhere without it) every pair counts. A path's problems name the
 /// segment, its phase and the pairs at its first colliding state. Throws InputError when the path
 /// needs more than kMaxValidationStates states (checkValidationWork, before any check), and
-/// StopRequested (core/stop_request.hpp) between segments when the caller asks to stop.
+/// StopRequested (core/stop_request.hpp) at the next state when the caller asks to stop.
 PathValidation validatePath(ExactCollisionChecker& checker, const SegmentChecker& segments,
                             const std::vector<Configuration>& path, const Configuration& start,
                             const Configuration& goal, std::optional<ClosingPhase> closing = {});

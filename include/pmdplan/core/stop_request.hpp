@@ -1,8 +1,8 @@
 #pragma once
-// A caller's request that long library work end early (Python's Ctrl-C, python/src/interrupt.hpp).
+// A caller's request that long library work end early (Python's Ctrl-C, python/src/python_interrupt.hpp).
 // While a StopRequestScope lives on a thread, stopRequested() on that thread asks its function: the
 // planners treat a stop like their time limit (PlannerRun::timeIsUp, the OMPL planners' termination
-// condition) and path validation throws StopRequested between segments. Without a scope nothing
+// condition) and path validation throws StopRequested at its next state. Without a scope nothing
 // ever stops early, and the check costs one thread-local read.
 #include <exception>
 #include <functional>
