@@ -137,7 +137,7 @@ TaskData& taskData(const std::string& name) {
   RecordingValidator recorder(*d.fast);
   SegmentChecker segmentChecker(recorder, *d.task.robot);
   RecordingMotions motions(segmentChecker);
-  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  PlannerSettings parameters = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
   parameters.seed = 1;
   parameters.timeLimit = 60.0;
   PmdRoadmapPlanner planner(space, recorder, motions, makeHandSampler(HandSamplingMode::Synergy, space, &synergies),

@@ -76,7 +76,7 @@ void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind
   d.task = loadTaskByName(name);
   d.synergies = loadSynergyModel(dataDirectory() / "synergies" / (d.task.robot->name() + "_default.yaml"));
   d.checking = std::make_unique<CollisionChecking>(d.task, kind);
-  TaskPlanningOptions options;
+  TaskPlanningSettings options;
   options.algorithm = algorithm;
   options.synergies = &d.synergies;
   options.parameters.sequence = sequence;

@@ -25,7 +25,7 @@ struct PaperSizedSession {
     const RobotModel robot = RobotModel::loadBuiltIn("sah_tx90");
     for (const int index : robot.group("hand")) hand.push_back(robot.activeJoints()[static_cast<std::size_t>(index)]);
     mapping = loadHandMapping(std::string(PMDPLAN_TEST_DATA_DIR) + "/glove/cyberglove22_to_sah.yaml");
-    const SyntheticGloveSession session = synthesiseGloveSession(SyntheticOperatorParameters{}, mapping, hand);
+    const SyntheticGloveSession session = synthesiseGloveSession(SyntheticOperatorSettings{}, mapping, hand);
     csv = formatGloveCsv(session.recording);
     recording = session.recording;
     calibration = session.calibration;
@@ -54,7 +54,7 @@ void BM_CsvRecordingToSynergyModel(benchmark::State& state) {
   for (auto _ : state) {
     const GloveRecording recording = parseGloveCsv(s.csv, "synthetic.csv");
     analysis =
-        analyseRecording(recording, s.calibration, s.mapping, s.hand, SynergyFitOptions{{"thumb_base"}}, "bench");
+        analyseRecording(recording, s.calibration, s.mapping, s.hand, SynergyFitSettings{{"thumb_base"}}, "bench");
     benchmark::DoNotOptimize(analysis.fit.model.directions.data());
   }
   reportModel(state, analysis);
@@ -67,7 +67,7 @@ void BM_FramesToSynergyModel(benchmark::State& state) {
   RecordingAnalysis analysis;
   for (auto _ : state) {
     analysis =
-        analyseRecording(s.recording, s.calibration, s.mapping, s.hand, SynergyFitOptions{{"thumb_base"}}, "bench");
+        analyseRecording(s.recording, s.calibration, s.mapping, s.hand, SynergyFitSettings{{"thumb_base"}}, "bench");
     benchmark::DoNotOptimize(analysis.fit.model.directions.data());
   }
   reportModel(state, analysis);
@@ -78,10 +78,10 @@ BENCHMARK(BM_FramesToSynergyModel)->Unit(benchmark::kMillisecond);
 void BM_SyntheticOperator(benchmark::State& state) {
   const auto& s = session();
   for (auto _ : state) {
-    const SyntheticGloveSession generated = synthesiseGloveSession(SyntheticOperatorParameters{}, s.mapping, s.hand);
+    const SyntheticGloveSession generated = synthesiseGloveSession(SyntheticOperatorSettings{}, s.mapping, s.hand);
     benchmark::DoNotOptimize(generated.recording.frames.data());
   }
-  state.counters["frames"] = SyntheticOperatorParameters{}.frames;
+  state.counters["frames"] = SyntheticOperatorSettings{}.frames;
 }
 BENCHMARK(BM_SyntheticOperator)->Unit(benchmark::kMillisecond);
 

@@ -47,8 +47,8 @@ struct CommandLine {
   bool report = false;
 };
 
-BenchOptions benchOptions(const CommandLine& c) {
-  BenchOptions o;
+BenchSettings benchOptions(const CommandLine& c) {
+  BenchSettings o;
   if (!c.tasks.empty()) o.tasks = c.tasks;
   o.planners = splitList(c.planners);
   o.runs = c.runs;
@@ -102,13 +102,13 @@ std::string hostName() {
 
 /// The OMPL log of the i-th task: named after the task as the command line gives it (a task file by
 /// its file name), never after the name inside the file.
-std::filesystem::path omplLogFile(const BenchOptions& o, std::size_t i) {
+std::filesystem::path omplLogFile(const BenchSettings& o, std::size_t i) {
   return omplLogPathForTask(o.omplLog, resolveTaskPath(o.tasks[i]).stem().string(), o.tasks.size());
 }
 
 /// Once the inputs are read (the tasks, their robots' files, the synergy models), before the runs:
 /// no output may be one of them or another output (core/command_files.hpp).
-void checkOutputsAgainstInputs(const BenchOptions& o) {
+void checkOutputsAgainstInputs(const BenchSettings& o) {
   const std::pair<const std::filesystem::path*, const char*> outputs[] = {
       {&o.csv, "--csv"}, {&o.markdown, "--markdown"}, {&o.plot, "--plot"}};
   for (const auto& [path, option] : outputs)
@@ -119,7 +119,7 @@ void checkOutputsAgainstInputs(const BenchOptions& o) {
 }
 
 /// `taskNames`: the tasks' own names (a task given as a file is known by the name inside it).
-void writeOutputs(const BenchOptions& o, const std::vector<std::string>& taskNames,
+void writeOutputs(const BenchSettings& o, const std::vector<std::string>& taskNames,
                   const std::vector<RunRecord>& records, const std::string& markdown, const std::string& started,
                   double totalSeconds, int ranks) {
   StagedOutputs staged;  // renamed together once every output is written
@@ -149,7 +149,7 @@ std::vector<std::string> taskNamesOf(const CampaignInputs& inputs) {
 }
 
 /// --report: the outputs of the journal's finished runs, nothing run.
-int report(const BenchOptions& o, const CampaignInputs& inputs) {
+int report(const BenchSettings& o, const CampaignInputs& inputs) {
   const auto records = finishedCampaignRecords(o);
   const std::size_t jobs = campaignJobs(o).size();
   const std::vector<std::string> taskNames = taskNamesOf(inputs);
@@ -166,7 +166,7 @@ int report(const BenchOptions& o, const CampaignInputs& inputs) {
 }
 
 int run(const CommandLine& c) {
-  const BenchOptions o = benchOptions(c);
+  const BenchSettings o = benchOptions(c);
   CampaignRanks ranks;
   CampaignInputs inputs = loadCampaignInputs(o);
   checkOutputsAgainstInputs(o);

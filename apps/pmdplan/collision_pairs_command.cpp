@@ -19,7 +19,7 @@ namespace {
 struct Options {
   std::string robot = "sah_tx90";
   std::string output;
-  SkippablePairParams params;
+  SkippablePairSettings params;
   std::string home;
 };
 
@@ -43,7 +43,7 @@ int run(const Options& o) {
   const std::filesystem::path out = o.output.empty() ? srdf : std::filesystem::path(o.output);
   checkOutputPath(out, "-o");
   const RobotModel model = loadWithCompanionText(urdf, companionFileText(withGroups, {}, "groups only"));
-  SkippablePairParams params = o.params;
+  SkippablePairSettings params = o.params;
   params.home = homeConfiguration(model, o.home);
   const auto pairs = findSkippablePairs(model, params);
   const std::string text =

@@ -51,7 +51,7 @@ int runSynth(const SynthOptions& o) {
   const JointLimits hand = RobotModel::loadByNameOrPath(o.robot).groupJoints("hand");
   checkOutputPath(output, "-o");  // again, against the mapping and the robot's files now read
   checkOutputPath(calibrationPath, "--calibration-out");
-  SyntheticOperatorParameters parameters;
+  SyntheticOperatorSettings parameters;
   parameters.frames = o.frames;
   parameters.seed = o.seed;
   SyntheticGloveSession session = synthesiseGloveSession(parameters, mapping, hand);

@@ -90,12 +90,12 @@ int run(const Options& o) {
                                                : o.trajectory->empty() ? defaultTrajectoryFile(output)
                                                                        : std::filesystem::path(*o.trajectory);
   if (o.trajectory) checkTrajectoryOutputs(task, {}, trajectoryFile, "--trajectory");
-  TaskPlanningOptions options;
+  TaskPlanningSettings options;
   options.algorithm = planner->algorithm;
   options.mode = *mode;
   options.parameters = resolvePlannerSettings(o.settings, *mode);
   options.synergies = synergies ? &*synergies : nullptr;
-  const PlannerParameters& parameters = options.parameters;
+  const PlannerSettings& parameters = options.parameters;
   options.grasp = resolveGraspSettings(o.grasp);
   ProgressLine progress("planning " + task.name);
   const TaskPlanningResult result = planTask(task, checking, options, [&](const PlannerProgress& p) {

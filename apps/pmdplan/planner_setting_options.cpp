@@ -10,8 +10,8 @@ namespace {
 
 /// "(paper default 10; full: 20)" or "(paper default 0.001)".
 std::string defaultText(const PlannerSetting& setting) {
-  const std::string pmd = setting.get(PlannerParameters::defaultsFor(HandSamplingMode::Synergy));
-  const std::string full = setting.get(PlannerParameters::defaultsFor(HandSamplingMode::FullSpace));
+  const std::string pmd = setting.get(PlannerSettings::defaultsFor(HandSamplingMode::Synergy));
+  const std::string full = setting.get(PlannerSettings::defaultsFor(HandSamplingMode::FullSpace));
   return " (default " + pmd + (pmd == full ? "" : "; full: " + full) + ")";
 }
 
@@ -33,12 +33,12 @@ void addPlannerSettingOptions(CLI::App& app, PlannerSettingOptions& settings, co
   }
 }
 
-PlannerParameters resolvePlannerSettings(const PlannerSettingOptions& settings, HandSamplingMode mode) {
+PlannerSettings resolvePlannerSettings(const PlannerSettingOptions& settings, HandSamplingMode mode) {
   const auto preset = parsePlannerPreset(settings.preset);
   if (!preset)
     throw InputError("", "--preset",
                      "'" + settings.preset + "' is not a preset; expected one of " + knownPlannerPresetNames());
-  PlannerParameters parameters = PlannerParameters::preset(*preset, mode);
+  PlannerSettings parameters = PlannerSettings::preset(*preset, mode);
   const auto& table = plannerSettingTable();
   for (std::size_t i = 0; i < table.size(); ++i)
     if (settings.options.at(i)->count() > 0) table[i].set(parameters, settings.values.at(i));

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 
 namespace pmdplan::cli {
 
@@ -19,8 +19,8 @@ struct PlannerSettingOptions {
 /// `seedHelp` replaces the seed's help line (bench's --seed is the first of the runs' seeds).
 void addPlannerSettingOptions(CLI::App& app, PlannerSettingOptions& settings, const std::string& seedHelp = "");
 
-/// The preset's values for the mode, then every given setting, then PlannerParameters::check();
+/// The preset's values for the mode, then every given setting, then PlannerSettings::check();
 /// throws InputError naming the flag ("--rho-a", "--preset") for bad input.
-PlannerParameters resolvePlannerSettings(const PlannerSettingOptions& settings, HandSamplingMode mode);
+PlannerSettings resolvePlannerSettings(const PlannerSettingOptions& settings, HandSamplingMode mode);
 
 }  // namespace pmdplan::cli

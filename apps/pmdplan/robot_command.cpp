@@ -24,7 +24,7 @@ struct Options {
   std::string palm;
   std::string home;
   std::string output;
-  SkippablePairParams params;
+  SkippablePairSettings params;
 };
 
 bool isBelow(const RobotModel& model, int link, int ancestor) {
@@ -76,7 +76,7 @@ int run(const Options& o) {
 
   const std::string groupsOnly = companionFileText(bare.name(), groups, o.palm, {}, "groups only");
   const RobotModel model = loadWithCompanionText(urdf, groupsOnly);
-  SkippablePairParams params = o.params;
+  SkippablePairSettings params = o.params;
   params.home = homeConfiguration(model, o.home);
   const auto pairs = findSkippablePairs(model, params);
   const std::string text = companionFileText(bare.name(), groups, o.palm, pairs,

@@ -159,7 +159,7 @@ int runPostures(const Options& o) {
     throw InputError("", "--units", "expected deg or rad, got '" + o.units + "'");
   const Eigen::MatrixXd postures =
       readPostureCsv(o.postures, hand, o.units == "deg" ? PostureUnit::Degrees : PostureUnit::Radians);
-  SynergyFitOptions fitOptions;
+  SynergyFitSettings fitOptions;
   fitOptions.ownAxisJoints = ownAxisJoints(o, hand);
   const std::string provenance = "hand postures " + fileName(o.postures) + " (" + std::to_string(postures.rows()) +
                                  " postures); PCA over joints normalised to [0, 1] by the limits of " +
@@ -205,7 +205,7 @@ int runRecording(const Options& o) {
       o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
   const HandMapping mapping = loadHandMapping(mappingPath);
   checkOutputs(o);  // again, now against the calibration, mapping and robot read (command_files.hpp)
-  SynergyFitOptions fitOptions;
+  SynergyFitSettings fitOptions;
   fitOptions.ownAxisJoints = ownAxisJoints(o, hand);
   const bool synthetic = !recording.notes.empty() && recording.notes.front().rfind("SYNTHETIC", 0) == 0;
   // File names only, so a model's provenance does not depend on where the files were.

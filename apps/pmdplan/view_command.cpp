@@ -86,7 +86,7 @@ int run(const Options& o) {
   const std::optional<SynergyModel> synergies =
       synergyFile.empty() ? std::nullopt : std::optional<SynergyModel>(loadSynergyModel(synergyFile));
 
-  ViewerDataParameters parameters;
+  ViewerDataSettings parameters;
   parameters.trajectory = trajectory ? &*trajectory : nullptr;
   ViewerData data =
       viewerData(task, path, synergies ? &*synergies : nullptr, {inputs.front().file, synergyFile}, parameters);

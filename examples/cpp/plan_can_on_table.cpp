@@ -22,7 +22,7 @@ int main() {
   const auto synergies =
       std::make_shared<const SynergyModel>(loadSynergyModel(defaultSynergyModelPath(task.robot->name())));
   CollisionChecking checking(task, CheckerKind::Fast);
-  TaskPlanningOptions options;
+  TaskPlanningSettings options;
   options.synergies = synergies.get();
   options.parameters.seed = 1;
   const TaskPlanningResult result = planTask(task, checking, options);

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   const int runs = std::atoi(argv[2]);
   const SynergyModel synergies = loadSynergyModel(defaultSynergyModelPath(task.robot->name()));
   CollisionChecking checking(task, CheckerKind::Fast);
-  TaskPlanningOptions options;
+  TaskPlanningSettings options;
   options.synergies = &synergies;
   for (int seed = 1; seed <= runs; ++seed) {
     options.parameters.seed = static_cast<std::uint64_t>(seed);

@@ -1,6 +1,5 @@
-// pmdplan.plan (the PMD roadmap planner, its full-space baseline or an OMPL planner on a task),
-// pmdplan.validate (the independent exact check of a path) and pmdplan.human_likeness. Planning
-// releases the GIL; errors are the CLI's (InputError, the same messages).
+// pmdplan.plan (the PMD roadmap planner, its full-space baseline or an OMPL planner on a task).
+// Planning releases the GIL; errors are the CLI's (InputError, the same messages).
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -89,7 +88,7 @@ PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const Plan
                      py::handle synergies, std::optional<std::uint64_t> seed, std::optional<double> timeLimit) {
   std::optional<PySynergyModel> model;
   if (entry.mode == HandSamplingMode::Synergy) model = synergiesFor(*task.task, synergies);
-  TaskPlanningOptions options;
+  TaskPlanningSettings options;
   options.algorithm = entry.algorithm;
   options.mode = entry.mode;
   options.parameters = plannerParametersFrom(settings, entry.mode, seed, timeLimit);
@@ -174,56 +173,6 @@ PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle set
   return result;
 }
 
-py::object validate(const PyTask& task, py::handle path, double toleranceMm, std::optional<std::size_t> closingFrom) {
-  const double tolerance = parseToleranceOption(toleranceMm);
-  std::vector<Configuration> points;
-  PathPhases phases{closingFrom};
-  if (py::isinstance<py::str>(path) || py::hasattr(path, "__fspath__")) {
-    const std::string file = py::str(path);
-    const PathFile read = readPathFile(file);
-    if (read.jointNames != task.task->robot->activeJointNames())
-      throw InputError(file, "joint_names",
-                       "the path's joints do not match the active joints of robot '" + task.task->robot->name() + "'");
-    if (closingFrom)
-      throw InputError(file, "closing_from", "a path file gives its own phases; pass closing_from with an array only");
-    points = read.points;
-    phases.closingFrom = read.closingFrom;
-  } else {
-    points = configurationsFrom(task.task->robot->activeJoints(), path, "path", false);
-  }
-  PathValidation validation;
-  PythonInterrupt interrupt;  // Ctrl-C stops the check at its next state and raises KeyboardInterrupt
-  try {
-    py::gil_scoped_release release;
-    ExactCollisionChecker checker(*task.task);
-    SegmentChecker segments(checker, *task.task->robot, tolerance);
-    validation = GraspRule(*task.task).validatePath(checker, segments, points, phases);
-  } catch (const StopRequested&) {
-    interrupt.raiseIfInterrupted();
-    throw;
-  }
-  return jsonToPython(pathValidationJson(validation, phases, toleranceMm));
-}
-
-py::dict humanLikeness(const PyTask& task, py::handle path, py::handle synergies, double step, int subspaceDirections) {
-  const auto points = configurationsFrom(task.task->robot->activeJoints(), path, "path", false);
-  if (points.empty()) throw InputError("", "path", "expected at least one configuration");
-  if (!(step > 0.0)) throw InputError("", "step", "expected a positive step in normalised joint units");
-  if (subspaceDirections < 0) throw InputError("", "subspace_directions", "expected a number of directions >= 0");
-  const PySynergyModel model = synergiesFor(*task.task, synergies);
-  const auto slots = modelJointSlots(*model.model, *task.task->robot, model.source);
-  HumanLikenessOptions options;
-  options.step = step;
-  options.subspaceDirections = subspaceDirections;
-  const HumanLikeness measured =
-      measureHumanLikeness(points, planningSpaceFromRobot(*task.task->robot), *model.model, slots, options);
-  py::dict result;
-  result["subspace_distance_mean"] = measured.subspaceDistanceMean;
-  result["subspace_distance_max"] = measured.subspaceDistanceMax;
-  result["mahalanobis_mean"] = measured.mahalanobisMean;
-  return result;
-}
-
 void bindResult(py::module_& m) {
   py::class_<PyPlanResult>(m, "PlanResult",
                            "One planner run: status, the path (points, dof) in radians, the statistics.")
@@ -281,16 +230,6 @@ void bindPlanning(py::module_& m) {
         "None (the robot's shipped model). The GIL is released while planning. OMPL planners seed OMPL's\n"
         "process-wide generator, which OMPL honours only before its first random number in a process.\n"
         "Raises InputError with the CLI's messages (bad planner, colliding start or goal, bad settings, model).");
-  m.def("validate", &validate, py::arg("task"), py::arg("path"), py::arg("tolerance_mm") = 1.0, py::kw_only(),
-        py::arg("closing_from") = py::none(),
-        "The independent check of `pmdplan validate`, by the same grasp rule: path is an (n, dof) array or a\n"
-        "path file (whose phases count). closing_from (arrays only): a grasp path's closing phase starts at that\n"
-        "point (PlanResult.closing_from), with hand-target contact allowed from there. Returns {'valid',\n"
-        "'states_checked', 'tolerance_mm', 'closing_from', 'collisions', 'problems'} (`pmdplan validate --json`).");
-  m.def("human_likeness", &humanLikeness, py::arg("task"), py::arg("path"), py::arg("synergies") = py::none(),
-        py::arg("step") = 0.01, py::arg("subspace_directions") = HumanLikenessOptions{}.subspaceDirections,
-        "How human-like a path's hand motion is (the benchmarks' measure): {'subspace_distance_mean',\n"
-        "'subspace_distance_max', 'mahalanobis_mean'}, walked along the path at `step` (normalised units).");
 }
 
 }  // namespace pmdplan::python

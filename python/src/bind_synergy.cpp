@@ -202,7 +202,7 @@ void bindFit(py::module_& m) {
           throw InputError(
               "", "postures",
               "expected an array of shape (frames, " + std::to_string(limits.size()) + "): one column per joint");
-        SynergyFitOptions options;
+        SynergyFitSettings options;
         options.ownAxisJoints = std::move(ownAxisJoints);
         options.constantTolerance = constantTolerance;
         SynergyFit fit;

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "pmdplan/planning/hand_sampling_mode.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 
 namespace pmdplan::python {
 
@@ -14,14 +14,14 @@ namespace py = pybind11;
 
 /// `settings` (a PlannerSettings, or None for the mode's defaults) as the library's parameters,
 /// with plan()'s seed and time_limit arguments, when given, in place of theirs.
-PlannerParameters plannerParametersFrom(py::handle settings, HandSamplingMode mode, std::optional<std::uint64_t> seed,
+PlannerSettings plannerParametersFrom(py::handle settings, HandSamplingMode mode, std::optional<std::uint64_t> seed,
                                         std::optional<double> timeLimit);
 
-std::uint64_t seedOf(const PlannerParameters& parameters);
+std::uint64_t seedOf(const PlannerSettings& parameters);
 /// The time limit plan() gives planners without settings (OMPL's).
 double defaultTimeLimit();
 
-/// PlannerParameters::check() with the field named as the CLI's option ("--time-limit").
-void checkPlannerParameters(const PlannerParameters& parameters);
+/// PlannerSettings::check() with the field named as the CLI's option ("--time-limit").
+void checkPlannerParameters(const PlannerSettings& parameters);
 
 }  // namespace pmdplan::python

@@ -10,11 +10,11 @@
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 
 namespace pmdplan {
 
-void checkBenchOptions(const BenchOptions& o) {
+void checkBenchOptions(const BenchSettings& o) {
   if (o.tasks.empty()) throw InputError("", "TASK", "no task given; expected built-in task names or task files");
   std::set<std::string> seen;
   for (const auto& task : o.tasks)

@@ -29,8 +29,8 @@ void keepPath(const TaskBench& bench, const RunRecord& record, const std::vector
 }
 
 RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord record,
-                        const PlannerParameters& parameters, PathFile* path) {
-  TaskPlanningOptions options;
+                        const PlannerSettings& parameters, PathFile* path) {
+  TaskPlanningSettings options;
   options.algorithm = planner.algorithm;
   options.mode = planner.mode;
   options.parameters = parameters;
@@ -56,7 +56,7 @@ RunRecord runPmdRoadmap(TaskBench& bench, const PlannerEntry& planner, RunRecord
   return record;
 }
 
-RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord record, const PlannerParameters& parameters,
+RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord record, const PlannerSettings& parameters,
                   PathFile* path) {
   const Task& task = bench.task();
   MotionValidator& motions = bench.checking().motions();
@@ -89,7 +89,7 @@ RunRecord runOmpl(TaskBench& bench, const PlannerEntry& planner, RunRecord recor
 
 }  // namespace
 
-RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters,
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerSettings& parameters,
                          PathFile* path) {
   RunRecord record;
   record.task = bench.task().name;

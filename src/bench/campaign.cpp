@@ -20,7 +20,7 @@
 
 namespace pmdplan {
 
-std::vector<CampaignJob> campaignJobs(const BenchOptions& options) {
+std::vector<CampaignJob> campaignJobs(const BenchSettings& options) {
   std::vector<CampaignJob> jobs;
   for (std::size_t t = 0; t < options.tasks.size(); ++t)
     for (std::size_t p = 0; p < options.planners.size(); ++p)
@@ -28,7 +28,7 @@ std::vector<CampaignJob> campaignJobs(const BenchOptions& options) {
   return jobs;
 }
 
-CampaignInputs loadCampaignInputs(const BenchOptions& options) {
+CampaignInputs loadCampaignInputs(const BenchSettings& options) {
   std::vector<Task> tasks;
   for (const auto& name : options.tasks) tasks.push_back(loadTaskByName(name));
   CampaignInputs inputs;
@@ -43,7 +43,7 @@ CampaignInputs loadCampaignInputs(const BenchOptions& options) {
   return inputs;
 }
 
-std::map<std::size_t, RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
+std::map<std::size_t, RunRecord> runCampaignJobs(const BenchSettings& options, CampaignInputs& inputs,
                                                  const CampaignJobSource& nextJob, const CampaignProgress& progress,
                                                  CampaignJournal* journal) {
   const std::vector<CampaignJob> jobs = campaignJobs(options);
@@ -66,7 +66,7 @@ std::map<std::size_t, RunRecord> runCampaignJobs(const BenchOptions& options, Ca
     TaskBench* bench = inputs.tasks.at(job.task).get();
     const PlannerEntry& planner = planners.at(job.planner);
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(job.run);
-    PlannerParameters parameters = options.roadmapParameters(planner.mode);
+    PlannerSettings parameters = options.roadmapParameters(planner.mode);
     parameters.seed = seed;
     parameters.timeLimit = options.timeLimit;
     const auto began = std::chrono::steady_clock::now();
@@ -100,7 +100,7 @@ std::map<std::size_t, RunRecord> runCampaignJobs(const BenchOptions& options, Ca
   return records;
 }
 
-std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options) {
+std::vector<RunRecord> finishedCampaignRecords(const BenchSettings& options) {
   const std::size_t jobCount = campaignJobs(options).size();
   std::vector<RunRecord> records;
   for (auto& [index, record] : CampaignJournal::finishedJobs(options.journal, options)) {
@@ -113,7 +113,7 @@ std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options) {
   return records;
 }
 
-std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, CampaignRanks& ranks,
+std::vector<RunRecord> runCampaign(const BenchSettings& options, CampaignInputs& inputs, CampaignRanks& ranks,
                                    const CampaignProgress& progress) {
   const std::size_t jobCount = campaignJobs(options).size();
   std::optional<CampaignJournal> journal;

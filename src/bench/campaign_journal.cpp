@@ -72,7 +72,7 @@ std::string campaignDifference(const std::string& line, const std::string& expec
 
 }  // namespace
 
-std::string CampaignJournal::header(const BenchOptions& o) {
+std::string CampaignJournal::header(const BenchSettings& o) {
   std::ostringstream text;
   text.precision(17);
   text << "tasks=" << joined(o.tasks) << " planners=" << joined(o.planners) << " runs=" << o.runs << " seed=" << o.seed
@@ -85,7 +85,7 @@ std::string CampaignJournal::header(const BenchOptions& o) {
 }
 
 std::map<std::size_t, RunRecord> CampaignJournal::finishedJobs(const std::filesystem::path& folder,
-                                                               const BenchOptions& options) {
+                                                               const BenchSettings& options) {
   std::error_code error;
   if (!std::filesystem::is_directory(folder, error))
     throw InputError(folder.string(), "--journal",
@@ -135,7 +135,7 @@ std::map<std::size_t, RunRecord> CampaignJournal::finishedJobs(const std::filesy
   return records;
 }
 
-CampaignJournal::CampaignJournal(const std::filesystem::path& folder, const BenchOptions& options, int rank)
+CampaignJournal::CampaignJournal(const std::filesystem::path& folder, const BenchSettings& options, int rank)
     : file_(folder / ("rank" + std::to_string(rank) + ".jsonl")), header_(header(options)) {
   std::error_code error;
   std::filesystem::create_directories(folder, error);

@@ -16,7 +16,7 @@ struct PostureMeasure {
 };
 
 PostureMeasure measurePosture(const SynergyModel& model, const std::vector<int>& slots, const Configuration& q,
-                              const HumanLikenessOptions& options) {
+                              const HumanLikenessSettings& options) {
   const SynergyReadout readout = synergyReadout(model, slots, q);
   const int k = std::clamp(options.subspaceDirections, 0, model.directionCount());
   double squared = 0.0;
@@ -33,7 +33,7 @@ PostureMeasure measurePosture(const SynergyModel& model, const std::vector<int>&
 
 HumanLikeness measureHumanLikeness(const std::vector<Configuration>& path, const PlanningSpace& space,
                                    const SynergyModel& model, const std::vector<int>& slots,
-                                   const HumanLikenessOptions& options) {
+                                   const HumanLikenessSettings& options) {
   if (path.empty()) throw std::invalid_argument("measureHumanLikeness: empty path");
   if (!(options.step > 0.0)) throw std::invalid_argument("measureHumanLikeness: step must be positive");
   const std::optional<IndependentHandReference> reference = independentHandReference(space);

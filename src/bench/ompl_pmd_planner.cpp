@@ -103,7 +103,7 @@ OmplPmdPlanner::OmplPmdPlanner(const ob::SpaceInformationPtr& si, PlanningSpace 
       space_(std::move(space)),
       mode_(mode),
       synergies_(std::move(synergies)),
-      parameters_(PlannerParameters::defaultsFor(mode)) {
+      parameters_(PlannerSettings::defaultsFor(mode)) {
   if (mode_ == HandSamplingMode::Synergy && !synergies_)
     throw std::invalid_argument("OmplPmdPlanner: the PMD mode needs a synergy model");
   specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
@@ -121,32 +121,32 @@ void OmplPmdPlanner::declareParameters() {
   auto& p = parameters_;
   auto& set = params();
   declare<double>(
-      set, "initial_arm_half_size", [&p](double v) { p.initialArmHalfSize = v; }, [&p] { return p.initialArmHalfSize; },
+      set, "initial_arm_half_size", [&p](double v) { p.rhoA = v; }, [&p] { return p.rhoA; },
       "0.0001:0.0001:1.");
   declare<bool>(
       set, "linear_arm_box_growth",
-      [&p](bool v) { p.armBoxGrowth = v ? ArmBoxGrowth::Linear : ArmBoxGrowth::Factorial; },
-      [&p] { return p.armBoxGrowth == ArmBoxGrowth::Linear; }, "0,1");
+      [&p](bool v) { p.rhoAGrowth = v ? ArmBoxGrowth::Linear : ArmBoxGrowth::Factorial; },
+      [&p] { return p.rhoAGrowth == ArmBoxGrowth::Linear; }, "0,1");
   declare<unsigned>(
-      set, "neighbour_count", [&p](unsigned v) { p.neighbourCount = v; },
-      [&p] { return static_cast<unsigned>(p.neighbourCount); }, "1:1:100");
+      set, "neighbour_count", [&p](unsigned v) { p.neighbours = v; },
+      [&p] { return static_cast<unsigned>(p.neighbours); }, "1:1:100");
   declare<double>(
-      set, "neighbour_threshold_factor", [&p](double v) { p.neighbourThresholdFactor = v; },
-      [&p] { return p.neighbourThresholdFactor; }, "0.1:0.1:10.");
+      set, "neighbour_threshold_factor", [&p](double v) { p.neighbourThreshold = v; },
+      [&p] { return p.neighbourThreshold; }, "0.1:0.1:10.");
   declare<int>(
       set, "arm_trials", [&p](int v) { p.armTrials = v; }, [&p] { return p.armTrials; }, "1:1:100");
   declare<int>(
       set, "hand_trials", [&p](int v) { p.handTrials = v; }, [&p] { return p.handTrials; }, "1:1:100");
   declare<unsigned>(
-      set, "min_sweep_visits", [&p](unsigned v) { p.minSweepVisits = v; },
-      [&p] { return static_cast<unsigned>(p.minSweepVisits); }, "1:1:100");
+      set, "min_sweep_visits", [&p](unsigned v) { p.sweepVisits = v; },
+      [&p] { return static_cast<unsigned>(p.sweepVisits); }, "1:1:100");
   declare<unsigned long>(
       set, "max_samples", [&p](unsigned long v) { p.maxSamples = v; },
       [&p] { return static_cast<unsigned long>(p.maxSamples); }, "");
   declare<double>(
       set, "kappa", [&p](double v) { p.pmdBox.kappa = v; }, [&p] { return p.pmdBox.kappa; }, "0.1:0.1:5.");
   declare<int>(
-      set, "max_pmds", [&p](int v) { p.pmdBox.maxDirections = v; }, [&p] { return p.pmdBox.maxDirections; }, "1:1:12");
+      set, "max_pmds", [&p](int v) { p.pmdBox.maxPmds = v; }, [&p] { return p.pmdBox.maxPmds; }, "1:1:12");
   declare<bool>(
       set, "smooth", [&p](bool v) { p.smooth = v; }, [&p] { return p.smooth; }, "0,1");
   declare<unsigned long>(
@@ -202,7 +202,7 @@ ob::PlannerStatus OmplPmdPlanner::solve(const ob::PlannerTerminationCondition& p
   };
   releaseDataStates();
   auto run = std::make_shared<Run>(si_, toState);
-  PlannerParameters parameters = parameters_;
+  PlannerSettings parameters = parameters_;
   if (parameters.seed == 0)
     parameters.seed = static_cast<std::uint64_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
   planner_ = std::make_unique<PmdRoadmapPlanner>(space_, run->states, run->motions,

@@ -11,14 +11,14 @@ namespace ob = ompl::base;
 
 OmplPmdStateSampler::OmplPmdStateSampler(const ob::StateSpace* stateSpace, const PlanningSpace& space,
                                          std::shared_ptr<const HandSampler> hands, const Configuration& start,
-                                         const Configuration& goal, const PlannerParameters& parameters)
+                                         const Configuration& goal, const PlannerSettings& parameters)
     : ob::StateSampler(stateSpace),
       space_(space),
       hands_(std::move(hands)),
       arms_(space, start, goal),
       centre_(start),
-      scales_(parameters.initialArmHalfSize, parameters.connect.armGrowth),
-      roundSamples_(parameters.connect.roundSamples),
+      scales_(parameters.rhoA, parameters.connect.armGrowth),
+      roundSamples_(parameters.connect.round),
       points_(parameters.sequence, static_cast<std::uint64_t>(rng_.uniformInt(1, std::numeric_limits<int>::max())),
               {hands_->maxDimension(), arms_.dimension(), 2}),
       uniform_(stateSpace) {}
@@ -43,7 +43,7 @@ void OmplPmdStateSampler::sampleGaussian(ob::State* state, const ob::State* mean
 
 void installPmdStateSampler(ob::StateSpace& stateSpace, const PlanningSpace& space,
                             std::shared_ptr<const HandSampler> hands, const Configuration& start,
-                            const Configuration& goal, const PlannerParameters& parameters) {
+                            const Configuration& goal, const PlannerSettings& parameters) {
   stateSpace.setStateSamplerAllocator([&space, hands, start, goal, parameters](const ob::StateSpace* s) {
     return std::make_shared<OmplPmdStateSampler>(s, space, hands, start, goal, parameters);
   });

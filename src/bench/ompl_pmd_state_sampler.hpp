@@ -8,7 +8,7 @@
 // rho_a and a largest half-size that grows by connect-arm-growth every connect-round draws (OMPL's
 // planners do not say when their trees stay apart, so the region grows with the draws). The hand
 // point, the segment point and scale and the arm point of a draw come from
-// the chosen sequence (PlannerParameters::sequence), seeded from the sampler's ompl::RNG
+// the chosen sequence (PlannerSettings::sequence), seeded from the sampler's ompl::RNG
 // (ompl::RNG::setSeed): deterministic. sampleUniformNear and sampleGaussian are the uniform space's (clamped to
 // the box) around the given state.
 #include <ompl/base/StateSampler.h>
@@ -20,7 +20,7 @@
 #include "pmdplan/planning/arm_box_scales.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 
 namespace pmdplan {
@@ -30,7 +30,7 @@ class OmplPmdStateSampler final : public ompl::base::StateSampler {
   /// `space` and `hands` are shared with the caller and must outlive the sampler.
   OmplPmdStateSampler(const ompl::base::StateSpace* stateSpace, const PlanningSpace& space,
                       std::shared_ptr<const HandSampler> hands, const Configuration& start, const Configuration& goal,
-                      const PlannerParameters& parameters);
+                      const PlannerSettings& parameters);
 
   void sampleUniform(ompl::base::State* state) override;
   void sampleUniformNear(ompl::base::State* state, const ompl::base::State* near, double distance) override;
@@ -55,6 +55,6 @@ class OmplPmdStateSampler final : public ompl::base::StateSampler {
 /// samplers included, then draw from it).
 void installPmdStateSampler(ompl::base::StateSpace& stateSpace, const PlanningSpace& space,
                             std::shared_ptr<const HandSampler> hands, const Configuration& start,
-                            const Configuration& goal, const PlannerParameters& parameters);
+                            const Configuration& goal, const PlannerSettings& parameters);
 
 }  // namespace pmdplan

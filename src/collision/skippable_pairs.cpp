@@ -39,7 +39,7 @@ bool onDifferentBranches(const RobotModel& model, int linkA, int linkB) {
   return common < a.size() && common < b.size();
 }
 
-std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const SkippablePairParams& params) {
+std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const SkippablePairSettings& params) {
   const auto& links = model.links();
   const std::size_t n = links.size();
   std::vector<char> adjacent(n * n, 0);

@@ -7,7 +7,7 @@ namespace pmdplan {
 
 HandArmDraw drawHandArm(const HandArmSources& sources, double step, double armHalfSize, Configuration q,
                         UnitPoints& points, const PlannerRun& run, PlanningStatistics& statistics) {
-  const PlannerParameters& parameters = sources.parameters;
+  const PlannerSettings& parameters = sources.parameters;
   std::size_t trials = 0;
   for (int j = 0; j < parameters.armTrials; ++j) {
     if (statistics.samples >= parameters.maxSamples || statistics.armTrials >= parameters.maxSamples)

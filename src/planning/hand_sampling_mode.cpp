@@ -15,7 +15,7 @@ std::optional<HandSamplingMode> parseHandSamplingMode(const std::string& name) {
 }
 
 std::unique_ptr<HandSampler> makeHandSampler(HandSamplingMode mode, const PlanningSpace& space,
-                                             const SynergyModel* model, const SynergySamplingParameters& parameters) {
+                                             const SynergyModel* model, const SynergySamplingSettings& parameters) {
   if (mode == HandSamplingMode::FullSpace) return std::make_unique<FullSpaceHandSampler>(space);
   if (model == nullptr) throw std::invalid_argument("makeHandSampler: the PMD planner needs a synergy model");
   return std::make_unique<SynergyHandSampler>(space, *model, parameters);

@@ -14,13 +14,13 @@ Configuration interpolate(const Configuration& a, const Configuration& b, double
 }  // namespace
 
 LazyPmdPlanner::LazyPmdPlanner(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
-                               std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters)
+                               std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters)
     : PmdPlannerBase(std::move(space), stateValidator, motionValidator, std::move(handSampler), parameters,
                      "LazyPmdPlanner") {}
 
 void LazyPmdPlanner::setup() {
   setupProblem();
-  radius_ = parameters_.lazy.radiusFactor * space_.distance(start_, goal_);
+  radius_ = parameters_.lazy.radius * space_.distance(start_, goal_);
 }
 
 void LazyPmdPlanner::clear() {
@@ -39,7 +39,7 @@ PlannerStatus LazyPmdPlanner::solve() {
   if (roadmap_.distance(start, goal) == 0.0) return finish({{start, goal}, {}});
   roadmap_.addEdge(start, goal);  // the first candidate: the straight segment
 
-  double rho = parameters_.initialArmHalfSize;
+  double rho = parameters_.rhoA;
   for (std::size_t round = 1;; ++round) {
     statistics_.sweeps = round;
     statistics_.finalArmHalfSize = rho;
@@ -55,7 +55,7 @@ PlannerStatus LazyPmdPlanner::solve() {
     // the segment at 1/2, 1/4, 3/4, 1/8, ...
     for (std::size_t i = 0; i < 4 + parameters_.lazy.batch && !stop; ++i) {
       if (i < 4)
-        stop = sampleNode(i % 2 == 0 ? 1.0 : 0.0, i < 2 ? parameters_.initialArmHalfSize : rho);
+        stop = sampleNode(i % 2 == 0 ? 1.0 : 0.0, i < 2 ? parameters_.rhoA : rho);
       else
         stop = sampleNode(radicalInverse(++draws_), rho);
     }

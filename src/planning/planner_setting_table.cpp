@@ -53,13 +53,13 @@ PlannerSetting setting(std::string flag, std::string symbol, std::string help, A
   PlannerSetting s{flag, std::move(symbol), std::move(help), std::is_floating_point_v<Field> ? "NUMBER" : "COUNT", {},
                    {}};
   if constexpr (std::is_floating_point_v<Field>) {
-    s.set = [flag, access](PlannerParameters& p, const std::string& text) { access(p) = parseNumber(flag, text); };
-    s.get = [access](const PlannerParameters& p) { return numberText(access(p)); };
+    s.set = [flag, access](PlannerSettings& p, const std::string& text) { access(p) = parseNumber(flag, text); };
+    s.get = [access](const PlannerSettings& p) { return numberText(access(p)); };
   } else {
-    s.set = [flag, access](PlannerParameters& p, const std::string& text) {
+    s.set = [flag, access](PlannerSettings& p, const std::string& text) {
       access(p) = narrow<Field>(flag, text, parseWhole(flag, text));
     };
-    s.get = [access](const PlannerParameters& p) { return std::to_string(access(p)); };
+    s.get = [access](const PlannerSettings& p) { return std::to_string(access(p)); };
   }
   return s;
 }
@@ -71,23 +71,23 @@ PlannerSetting growthSetting() {
                    "factorial|linear",
                    {},
                    {}};
-  s.set = [](PlannerParameters& p, const std::string& text) {
+  s.set = [](PlannerSettings& p, const std::string& text) {
     if (text == "factorial")
-      p.armBoxGrowth = ArmBoxGrowth::Factorial;
+      p.rhoAGrowth = ArmBoxGrowth::Factorial;
     else if (text == "linear")
-      p.armBoxGrowth = ArmBoxGrowth::Linear;
+      p.rhoAGrowth = ArmBoxGrowth::Linear;
     else
       reject("rho-a-growth", text, "a growth rule; expected factorial or linear");
   };
-  s.get = [](const PlannerParameters& p) {
-    return std::string(p.armBoxGrowth == ArmBoxGrowth::Factorial ? "factorial" : "linear");
+  s.get = [](const PlannerSettings& p) {
+    return std::string(p.rhoAGrowth == ArmBoxGrowth::Factorial ? "factorial" : "linear");
   };
   return s;
 }
 
 PlannerSetting smoothingSetting() {
   PlannerSetting s{"smooth", "", "smooth the path as in Sect. 5.3", "on|off", {}, {}};
-  s.set = [](PlannerParameters& p, const std::string& text) {
+  s.set = [](PlannerSettings& p, const std::string& text) {
     if (text == "on")
       p.smooth = true;
     else if (text == "off")
@@ -95,7 +95,7 @@ PlannerSetting smoothingSetting() {
     else
       reject("smooth", text, "on or off");
   };
-  s.get = [](const PlannerParameters& p) { return std::string(p.smooth ? "on" : "off"); };
+  s.get = [](const PlannerSettings& p) { return std::string(p.smooth ? "on" : "off"); };
   return s;
 }
 
@@ -103,12 +103,12 @@ PlannerSetting sequenceSetting() {
   PlannerSetting s{
       "sequence",          "", "the samplers' numbers: random, halton or sdk (the paper's toolkit, Sect. 6)",
       "random|halton|sdk", {}, {}};
-  s.set = [](PlannerParameters& p, const std::string& text) {
+  s.set = [](PlannerSettings& p, const std::string& text) {
     const std::optional<SampleSequence> sequence = parseSampleSequence(text);
     if (!sequence) reject("sequence", text, "a sample sequence; expected " + knownSampleSequenceNames());
     p.sequence = *sequence;
   };
-  s.get = [](const PlannerParameters& p) { return sampleSequenceName(p.sequence); };
+  s.get = [](const PlannerSettings& p) { return sampleSequenceName(p.sequence); };
   return s;
 }
 
@@ -118,14 +118,14 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
   static const std::vector<PlannerSetting> table = {
       setting<double>(
           "rho-a", "rho_a", "initial half-size of the arm hypercubes, normalised arm-joint units",
-          [](auto& p) -> auto& { return p.initialArmHalfSize; }),
+          [](auto& p) -> auto& { return p.rhoA; }),
       growthSetting(),
       setting<std::size_t>(
           "neighbours", "K", "most neighbours a new sample is connected to",
-          [](auto& p) -> auto& { return p.neighbourCount; }),
+          [](auto& p) -> auto& { return p.neighbours; }),
       setting<double>(
           "neighbour-threshold", "", "neighbour radius as a multiple of d(c_ini, c_goal) (Sect. 5.2: 1)",
-          [](auto& p) -> auto& { return p.neighbourThresholdFactor; }),
+          [](auto& p) -> auto& { return p.neighbourThreshold; }),
       setting<int>(
           "arm-trials", "n_A", "arm configurations tried per hypercube", [](auto& p) -> auto& { return p.armTrials; }),
       setting<int>(
@@ -136,13 +136,13 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
           [](auto& p) -> auto& { return p.maxSamples; }),
       setting<std::size_t>(
           "sweep-visits", "", "hypercube visits per sweep before rho_a grows, at least (1: the paper's one pass)",
-          [](auto& p) -> auto& { return p.minSweepVisits; }),
+          [](auto& p) -> auto& { return p.sweepVisits; }),
       setting<double>(
           "kappa", "kappa", "half-width of the PMD hand box along PMD i, in standard deviations sigma_i",
           [](auto& p) -> auto& { return p.pmdBox.kappa; }),
       setting<int>(
           "max-pmds", "", "most PMDs the hand dimension grows to (with the thumb base)",
-          [](auto& p) -> auto& { return p.pmdBox.maxDirections; }),
+          [](auto& p) -> auto& { return p.pmdBox.maxPmds; }),
       smoothingSetting(),
       setting<double>(
           "time-limit", "", "wall-clock limit of the roadmap construction in seconds (inf: none)",
@@ -158,7 +158,7 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
           [](auto& p) -> auto& { return p.lazy.neighbours; }),
       setting<double>(
           "lazy-radius", "", "for pmd-lazy: lazy edges join nodes at most this multiple of d(c_ini, c_goal) apart",
-          [](auto& p) -> auto& { return p.lazy.radiusFactor; }),
+          [](auto& p) -> auto& { return p.lazy.radius; }),
       setting<std::size_t>(
           "lazy-probes", "", "for pmd-lazy: inner states of each candidate edge checked before its motion check",
           [](auto& p) -> auto& { return p.lazy.probes; }),
@@ -167,11 +167,11 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
           [](auto& p) -> auto& { return p.lazy.armGrowth; }),
       setting<double>(
           "connect-range", "", "for pmd-connect: longest tree step, as a multiple of d(c_ini, c_goal) (inf: none)",
-          [](auto& p) -> auto& { return p.connect.rangeFactor; }),
+          [](auto& p) -> auto& { return p.connect.range; }),
       setting<std::size_t>(
           "connect-round", "",
           "for pmd-connect: samples per round; the arm region grows after each round that left the trees apart",
-          [](auto& p) -> auto& { return p.connect.roundSamples; }),
+          [](auto& p) -> auto& { return p.connect.round; }),
       setting<double>(
           "connect-arm-growth", "",
           "for pmd-connect: the arm region's largest half-size is multiplied by this after each round that left the "
@@ -186,7 +186,7 @@ const std::vector<PlannerSetting>& plannerSettingTable() {
   return table;
 }
 
-std::string describePlannerSettings(const PlannerParameters& parameters) {
+std::string describePlannerSettings(const PlannerSettings& parameters) {
   std::string text;
   for (const PlannerSetting& s : plannerSettingTable())
     text += (text.empty() ? "" : " ") + s.flag + "=" + s.get(parameters);

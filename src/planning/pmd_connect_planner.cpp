@@ -11,13 +11,13 @@ namespace pmdplan {
 
 PmdConnectPlanner::PmdConnectPlanner(PlanningSpace space, StateValidator& stateValidator,
                                      MotionValidator& motionValidator, std::unique_ptr<HandSampler> handSampler,
-                                     PlannerParameters parameters)
+                                     PlannerSettings parameters)
     : PmdPlannerBase(std::move(space), stateValidator, motionValidator, std::move(handSampler), parameters,
                      "PmdConnectPlanner") {}
 
 void PmdConnectPlanner::setup() {
   setupProblem();
-  range_ = parameters_.connect.rangeFactor * space_.distance(start_, goal_);
+  range_ = parameters_.connect.range * space_.distance(start_, goal_);
 }
 
 void PmdConnectPlanner::clear() {
@@ -38,11 +38,11 @@ PlannerStatus PmdConnectPlanner::solve() {
     return finish(startRoot, goalRoot);
 
   const HandArmSources sources{space_, *armSampler_, *handSampler_, stateValidator_, parameters_};
-  ArmBoxScales scales(parameters_.initialArmHalfSize, parameters_.connect.armGrowth);
+  ArmBoxScales scales(parameters_.rhoA, parameters_.connect.armGrowth);
   for (std::size_t round = 1;; ++round) {
     statistics_.sweeps = round;
     statistics_.finalArmHalfSize = scales.largest();
-    for (std::size_t s = 0; s < parameters_.connect.roundSamples; ++s) {
+    for (std::size_t s = 0; s < parameters_.connect.round; ++s) {
       double point[2];  // where on the segment, and the box's scale
       points_.next(PointStream::SegmentPoint, 2, point);
       const HandArmDraw draw =

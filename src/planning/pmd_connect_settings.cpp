@@ -9,11 +9,11 @@
 namespace pmdplan {
 
 void PmdConnectSettings::check() const {
-  if (!(rangeFactor > 0.0))
+  if (!(range > 0.0))
     throw InputError(
         "", "connect-range",
-        "must be a positive factor of the start-goal distance (inf: no limit), got " + messageNumberText(rangeFactor));
-  if (roundSamples < 1 || roundSamples > 1'000'000)
+        "must be a positive factor of the start-goal distance (inf: no limit), got " + messageNumberText(range));
+  if (round < 1 || round > 1'000'000)
     throw InputError("", "connect-round", "must be a whole number of samples from 1 to 1000000");
   if (probes > 64) throw InputError("", "connect-probes", "must be a whole number from 0 to 64");
   if (!(armGrowth >= 1.0) || !std::isfinite(armGrowth))

@@ -5,7 +5,7 @@
 namespace pmdplan {
 
 PmdPlannerBase::PmdPlannerBase(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
-                               std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters, std::string name)
+                               std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters, std::string name)
     : space_(std::move(space)),
       stateValidator_(stateValidator),
       motionValidator_(motionValidator),

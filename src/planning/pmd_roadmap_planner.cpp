@@ -12,7 +12,7 @@ namespace pmdplan {
 
 PmdRoadmapPlanner::PmdRoadmapPlanner(PlanningSpace space, StateValidator& stateValidator,
                                      MotionValidator& motionValidator, std::unique_ptr<HandSampler> handSampler,
-                                     PlannerParameters parameters)
+                                     PlannerSettings parameters)
     : PmdPlannerBase(std::move(space), stateValidator, motionValidator, std::move(handSampler), parameters,
                      "PmdRoadmapPlanner") {}
 
@@ -21,7 +21,7 @@ void PmdRoadmapPlanner::setup() {
   // FINDNEIGHBORS' threshold: the start-goal distance (times a factor, 1 in the paper), in the
   // same normalised full space as all other distances (docs/deviations.md).
   startGoalDistance_ = space_.distance(start_, goal_);
-  neighbourThreshold_ = parameters_.neighbourThresholdFactor * startGoalDistance_;
+  neighbourThreshold_ = parameters_.neighbourThreshold * startGoalDistance_;
 }
 
 void PmdRoadmapPlanner::clear() {
@@ -42,23 +42,23 @@ PlannerStatus PmdRoadmapPlanner::solve() {
     roadmap_.addEdge(startNode_, goalNode_);
     return findPath();
   }
-  const ConnectionRule rule{parameters_.neighbourCount, neighbourThreshold_};
+  const ConnectionRule rule{parameters_.neighbours, neighbourThreshold_};
 
-  double rho = parameters_.initialArmHalfSize;
+  double rho = parameters_.rhoA;
   for (std::size_t k = 1;; ++k) {
     // rho_a = k·rho_a (or k·rho_a(1), see ArmBoxGrowth), capped at 1: a box of that half-size
     // around any point of the segment already covers the whole normalised arm box, and k! would
     // overflow after ~170 fruitless sweeps.
-    const double grown = parameters_.armBoxGrowth == ArmBoxGrowth::Factorial ? rho : parameters_.initialArmHalfSize;
+    const double grown = parameters_.rhoAGrowth == ArmBoxGrowth::Factorial ? rho : parameters_.rhoA;
     rho = std::min(static_cast<double>(k) * grown, 1.0);
     statistics_.sweeps = k;
     statistics_.finalArmHalfSize = rho;
     const std::size_t maxsteps = segmentIntervals(armSampler_->segmentLength(), rho);
     SearchRange searchRange;
     // One pass over the hypercubes in the search range, as the paper; when the range has
-    // narrowed to fewer than minSweepVisits of them, more passes while they still add nodes.
+    // narrowed to fewer than sweepVisits of them, more passes while they still add nodes.
     std::size_t visits = 0;
-    for (bool added = true; added && visits < parameters_.minSweepVisits;) {
+    for (bool added = true; added && visits < parameters_.sweepVisits;) {
       added = false;
       for (std::size_t i = 0; i <= maxsteps; ++i) {
         const double step = vanDerCorput(i, maxsteps);

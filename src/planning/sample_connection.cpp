@@ -36,7 +36,7 @@ std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, st
 
 std::size_t connectSample(Roadmap& roadmap, NodeIndex node, const ConnectionRule& rule,
                           std::optional<NodeIndex> forcedNeighbour, MotionValidator& motionValidator) {
-  std::vector<NodeIndex> neighbours = findNeighbours(roadmap, node, rule.neighbourCount, rule.threshold);
+  std::vector<NodeIndex> neighbours = findNeighbours(roadmap, node, rule.neighbours, rule.threshold);
   if (forcedNeighbour && *forcedNeighbour != node &&
       std::find(neighbours.begin(), neighbours.end(), *forcedNeighbour) == neighbours.end()) {
     // Keep "nearest first" with the forced node among the others.

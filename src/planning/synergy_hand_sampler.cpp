@@ -15,11 +15,11 @@ namespace {
 }  // namespace
 
 SynergyHandSampler::SynergyHandSampler(const PlanningSpace& space, const SynergyModel& model,
-                                       SynergySamplingParameters parameters) {
+                                       SynergySamplingSettings parameters) {
   if (!(parameters.kappa > 0.0) || !std::isfinite(parameters.kappa))
     reject("kappa", "must be a positive number of standard deviations, got " + std::to_string(parameters.kappa));
-  if (parameters.maxDirections < 1)
-    reject("max_directions", "must be at least 1, got " + std::to_string(parameters.maxDirections));
+  if (parameters.maxPmds < 1)
+    reject("max_directions", "must be at least 1, got " + std::to_string(parameters.maxPmds));
 
   std::vector<std::string> handJoints;
   for (const int i : space.handIndices) handJoints.push_back(space.joints[static_cast<std::size_t>(i)].name);
@@ -32,7 +32,7 @@ SynergyHandSampler::SynergyHandSampler(const PlanningSpace& space, const Synergy
   }
   for (const std::string& name : model.ownAxisJoints) ownAxisSlots_.push_back(model.jointIndex(name));
 
-  const Eigen::Index used = std::min<Eigen::Index>(parameters.maxDirections, model.directions.cols());
+  const Eigen::Index used = std::min<Eigen::Index>(parameters.maxPmds, model.directions.cols());
   mean_ = model.mean;
   directions_ = model.directions.leftCols(used);
   halfWidths_ = parameters.kappa * model.sigma.head(used);

@@ -25,7 +25,7 @@ std::optional<std::size_t> appendClosing(const Task& task, const TaskApproach& a
   return path.size() - 2;
 }
 
-TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningOptions& options,
+TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningSettings& options,
                             ProgressCallback progress) {
   const PlanningSpace space = planningSpaceFromRobot(*task.robot);
   options.parameters.check();

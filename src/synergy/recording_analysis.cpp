@@ -4,7 +4,7 @@ namespace pmdplan {
 
 RecordingAnalysis analyseRecording(const GloveRecording& recording, const GloveCalibration& calibration,
                                    const HandMapping& mapping, const JointLimits& handJoints,
-                                   const SynergyFitOptions& options, const std::string& provenance) {
+                                   const SynergyFitSettings& options, const std::string& provenance) {
   const MappedPostures mapped = mapToJoints(calibrate(recording, calibration), mapping, handJoints);
   RecordingAnalysis analysis;
   analysis.clampedValues = mapped.clampedValues;

@@ -21,7 +21,7 @@ void orientLargestComponentPositive(Eigen::Ref<Eigen::VectorXd> direction) {
   if (direction(largest) < 0) direction = -direction;
 }
 
-std::vector<int> ownAxisIndices(const JointLimits& joints, const SynergyFitOptions& options) {
+std::vector<int> ownAxisIndices(const JointLimits& joints, const SynergyFitSettings& options) {
   std::vector<int> indices;
   for (const auto& name : options.ownAxisJoints) {
     const auto it = std::find_if(joints.begin(), joints.end(), [&](const JointLimit& j) { return j.name == name; });
@@ -37,7 +37,7 @@ std::vector<int> ownAxisIndices(const JointLimits& joints, const SynergyFitOptio
 
 }  // namespace
 
-SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitOptions& options,
+SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitSettings& options,
                            const PostureSource& source) {
   const auto jointCount = static_cast<Eigen::Index>(joints.size());
   if (postures.cols() != jointCount)

@@ -67,7 +67,7 @@ const std::vector<double>& syntheticOperatorVarianceFractions() {
   return fractions;
 }
 
-SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& parameters, const HandMapping& mapping,
+SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorSettings& parameters, const HandMapping& mapping,
                                              const JointLimits& handJoints) {
   if (parameters.frames < 1 || parameters.frames > kMaxSyntheticFrames)
     throw InputError(

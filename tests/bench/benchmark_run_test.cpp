@@ -49,7 +49,7 @@ TEST_F(BenchmarkRun, APathThatMissesTheGoalIsAFailure) {
 }
 
 TEST_F(BenchmarkRun, PmdSampledOmplPlannersSolveWithValidPathsFarCloserToTheSynergySubspace) {
-  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  PlannerSettings parameters = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
   parameters.seed = 3;
   parameters.timeLimit = 30.0;
   // The fast checker, as `pmdplan bench` runs by default: PRM@pmd has a long tail (1.3 s mean).
@@ -75,7 +75,7 @@ TEST_F(BenchmarkRun, PmdSampledOmplPlannersSolveWithValidPathsFarCloserToTheSyne
 }
 
 TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
-  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  PlannerSettings parameters = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
   parameters.seed = 2;
   parameters.timeLimit = 30.0;
   const RunRecord r = runPlannerOnce(*bench_, *findPlanner("pmd"), 1, parameters);
@@ -92,7 +92,7 @@ TEST_F(BenchmarkRun, ThePmdPlannerSolvesWithAValidHumanLikePath) {
 }
 
 TEST_F(BenchmarkRun, OurLazyAndBidirectionalPlannersSolveWithValidHumanLikePaths) {
-  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  PlannerSettings parameters = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
   parameters.timeLimit = 30.0;
   // The fast checker, as `pmdplan bench` runs by default; the path is certified all the same.
   TaskBench bench(loadTaskByName("can_on_table"), CheckerKind::Fast, 0.001, *synergies_, kSynergyFile);
@@ -114,7 +114,7 @@ TEST_F(BenchmarkRun, TheMeasuresThatDoNotUseThePlannersModelAlsoPreferPmdToFullS
   TaskBench fast(loadTaskByName("can_on_table"), CheckerKind::Fast, 0.001, *synergies_, kSynergyFile);
   for (std::uint64_t seed = 1; seed <= test::trials(3, 1); ++seed) {
     const auto settings = [&](HandSamplingMode mode) {
-      PlannerParameters parameters = PlannerParameters::defaultsFor(mode);
+      PlannerSettings parameters = PlannerSettings::defaultsFor(mode);
       parameters.seed = seed;
       parameters.timeLimit = 30.0;
       return parameters;
@@ -131,7 +131,7 @@ TEST_F(BenchmarkRun, TheMeasuresThatDoNotUseThePlannersModelAlsoPreferPmdToFullS
 }
 
 TEST_F(BenchmarkRun, AnOmplPlannerSolvesInAForkedChildAndTheSameSeedGivesTheSameRun) {
-  PlannerParameters parameters;
+  PlannerSettings parameters;
   parameters.seed = 3;
   // A bound, not a target: in the Release build the test's two runs took 11 s together on a loaded
   // machine; the sanitizer build (clang -O1, ASan + UBSan) ran out of 30 s with the exact checker.

@@ -16,7 +16,7 @@ namespace {
 
 TEST(CampaignJournal, KeepsRecordsAcrossRanksAndReopenings) {
   test::TempDir dir;
-  BenchOptions options;
+  BenchSettings options;
   const RunRecord a = test::successfulRun("can_on_table", "pmd", 0, 0.25),
                   b = test::failedRun("can_on_table", "pmd", 1, "not solved: time limit");
   {
@@ -34,9 +34,9 @@ TEST(CampaignJournal, KeepsRecordsAcrossRanksAndReopenings) {
 
 TEST(CampaignJournal, AnotherCampaignsFileOrAGarbledLineIsAnError) {
   test::TempDir dir;
-  BenchOptions options;
+  BenchSettings options;
   { CampaignJournal(dir.path() / "j", options, 0).append(0, test::successfulRun("can_on_table", "pmd", 0, 0.25)); }
-  BenchOptions other = options;
+  BenchSettings other = options;
   other.runs = 11;
   try {
     CampaignJournal(dir.path() / "j", other, 0);
@@ -52,7 +52,7 @@ TEST(CampaignJournal, AnotherCampaignsFileOrAGarbledLineIsAnError) {
 
 TEST(CampaignJournal, LinesAreJsonObjectsOfTheJobAndItsRecord) {
   test::TempDir dir;
-  BenchOptions options;
+  BenchSettings options;
   const RunRecord a = test::successfulRun("can_on_table", "pmd", 0, 0.25);
   { CampaignJournal(dir.path() / "j", options, 0).append(7, a); }
   std::ifstream in(dir.path() / "j" / "rank0.jsonl");
@@ -72,16 +72,16 @@ TEST(CampaignJournal, AFolderNamedLikeARankFileIsRefusedNamingIt) {
   test::TempDir dir;
   std::filesystem::create_directories(dir.path() / "j" / "rank1.jsonl");
   for (const int rank : {0, 1})
-    test::expectInputError([&] { CampaignJournal(dir.path() / "j", BenchOptions{}, rank); },
+    test::expectInputError([&] { CampaignJournal(dir.path() / "j", BenchSettings{}, rank); },
                            (dir.path() / "j" / "rank1.jsonl").string(), "--journal", "is not a regular file");
-  test::expectInputError([&] { CampaignJournal::finishedJobs(dir.path() / "j", BenchOptions{}); },
+  test::expectInputError([&] { CampaignJournal::finishedJobs(dir.path() / "j", BenchSettings{}); },
                          (dir.path() / "j" / "rank1.jsonl").string(), "--journal", "is not a regular file");
 }
 
 // nlohmann keeps the last of a repeated key: a line saying "job" twice is refused, naming the key.
 TEST(CampaignJournal, ALineWithARepeatedKeyIsRefused) {
   test::TempDir dir;
-  BenchOptions options;
+  BenchSettings options;
   { CampaignJournal(dir.path() / "j", options, 0).append(3, test::successfulRun("can_on_table", "pmd", 0, 0.25)); }
   const auto file = dir.path() / "j" / "rank0.jsonl";
   std::ifstream in(file);
@@ -96,9 +96,9 @@ TEST(CampaignJournal, ALineWithARepeatedKeyIsRefused) {
 // differs, anything else by its length.
 TEST(CampaignJournal, ItsFirstLineIsDescribedNotShown) {
   test::TempDir dir;
-  BenchOptions options;
+  BenchSettings options;
   { CampaignJournal(dir.path() / "j", options, 0); }
-  BenchOptions other = options;
+  BenchSettings other = options;
   other.runs = 11;
   test::expectInputError([&] { CampaignJournal(dir.path() / "j", other, 0); },
                          (dir.path() / "j" / "rank0.jsonl").string(), "--journal",
@@ -119,7 +119,7 @@ TEST(CampaignJournal, AnOldTabSeparatedJournalIsAnError) {
   test::TempDir dir;
   std::filesystem::create_directories(dir.path() / "j");
   std::ofstream(dir.path() / "j" / "rank0.tsv") << "# pmdplan bench journal: tasks=can_on_table\n0\trun-record-2\n";
-  test::expectInputError([&] { CampaignJournal(dir.path() / "j", BenchOptions{}, 0); },
+  test::expectInputError([&] { CampaignJournal(dir.path() / "j", BenchSettings{}, 0); },
                          (dir.path() / "j" / "rank0.tsv").string(), "line 1", "older pmdplan");
 }
 

@@ -10,7 +10,7 @@ namespace pmdplan {
 namespace {
 
 TEST(Campaign, JobsAreTaskMajorThenPlannerThenRun) {
-  BenchOptions o;
+  BenchSettings o;
   o.tasks = {"a", "b"};
   o.planners = {"pmd", "full", "ompl:RRT"};
   o.runs = 4;

@@ -53,7 +53,7 @@ TEST(HumanLikeness, MeansAreTakenAlongThePathAndTheMaximumAtItsWorstPosture) {
   EXPECT_NEAR(h.subspaceDistanceMax, 0.5, 1e-12);
   // Then an arm-only stretch of the same length at the far posture: with steps of 0.125 the walk
   // has 0, 0.125, ..., 0.5 on the first segment and four more points at 0.5 on the second.
-  HumanLikenessOptions options;
+  HumanLikenessSettings options;
   options.step = 0.125;
   const auto longer =
       measureHumanLikeness({Toy::at(0.5, 0.5), Toy::at(0.5, 1.0), Configuration(Eigen::Vector3d(1.0, 1.0, 2.0))},

@@ -59,9 +59,9 @@ TEST(OmplPmdPlanner, SettingsAreOmplParameters) {
   EXPECT_TRUE(planner.params().setParam("neighbour_count", "5"));
   EXPECT_TRUE(planner.params().setParam("arm_trials", "7"));
   EXPECT_TRUE(planner.params().setParam("linear_arm_box_growth", "1"));
-  EXPECT_EQ(planner.parameters().neighbourCount, 5u);
+  EXPECT_EQ(planner.parameters().neighbours, 5u);
   EXPECT_EQ(planner.parameters().armTrials, 7);
-  EXPECT_EQ(planner.parameters().armBoxGrowth, ArmBoxGrowth::Linear);
+  EXPECT_EQ(planner.parameters().rhoAGrowth, ArmBoxGrowth::Linear);
   std::string value;
   ASSERT_TRUE(planner.params().getParam("arm_trials", value));
   EXPECT_EQ(value, "7");

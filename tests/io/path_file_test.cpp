@@ -146,7 +146,7 @@ TEST(PathFile, TheSameSeedGivesAByteIdenticalFile) {
     toy::WallStateValidator stateValidator;
     toy::WallMotionValidator motionValidator;
     const SynergyModel model = toy::synergyModel();
-    PlannerParameters parameters;
+    PlannerSettings parameters;
     parameters.seed = seed;
     PmdRoadmapPlanner planner(toy::space(), stateValidator, motionValidator,
                               makeHandSampler(HandSamplingMode::Synergy, toy::space(), &model), parameters);

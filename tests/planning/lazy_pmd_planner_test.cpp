@@ -23,7 +23,7 @@ struct LazyToyRun {
   toy::WallMotionValidator motionValidator;
   LazyPmdPlanner planner;
 
-  explicit LazyToyRun(PlannerParameters parameters, toy::Wall wall = {}, const Configuration& start = toy::start(),
+  explicit LazyToyRun(PlannerSettings parameters, toy::Wall wall = {}, const Configuration& start = toy::start(),
                       const Configuration& goal = toy::goal())
       : stateValidator(wall),
         motionValidator(wall),
@@ -114,7 +114,7 @@ TEST(LazyPmdPlanner, TheSameSeedGivesTheSamePath) {
 }
 
 TEST(LazyPmdPlanner, AClosedWallStopsAtTheSampleLimit) {
-  PlannerParameters parameters = toy::withSeed(2);
+  PlannerSettings parameters = toy::withSeed(2);
   parameters.maxSamples = 500;
   LazyToyRun run(parameters, toy::Wall{false});
   EXPECT_EQ(run.planner.solve(), PlannerStatus::SampleLimit);
@@ -133,7 +133,7 @@ TEST(LazyPmdPlanner, ACollidingStartOrGoalIsReported) {
 
 TEST(LazyPmdPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
   const auto expectRejected = [](const std::string& flag, auto change) {
-    PlannerParameters parameters = toy::withSeed(1);
+    PlannerSettings parameters = toy::withSeed(1);
     change(parameters.lazy);
     LazyToyRun run(parameters);
     try {
@@ -146,15 +146,15 @@ TEST(LazyPmdPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
   };
   expectRejected("lazy-batch", [](LazyPmdSettings& s) { s.batch = 1'000'001; });
   expectRejected("lazy-neighbours", [](LazyPmdSettings& s) { s.neighbours = 0; });
-  expectRejected("lazy-radius", [](LazyPmdSettings& s) { s.radiusFactor = 0.0; });
-  expectRejected("lazy-radius", [](LazyPmdSettings& s) { s.radiusFactor = std::numeric_limits<double>::infinity(); });
+  expectRejected("lazy-radius", [](LazyPmdSettings& s) { s.radius = 0.0; });
+  expectRejected("lazy-radius", [](LazyPmdSettings& s) { s.radius = std::numeric_limits<double>::infinity(); });
   expectRejected("lazy-probes", [](LazyPmdSettings& s) { s.probes = 65; });
   expectRejected("lazy-arm-growth", [](LazyPmdSettings& s) { s.armGrowth = 0.5; });
   expectRejected("lazy-arm-growth", [](LazyPmdSettings& s) { s.armGrowth = std::nan(""); });
 }
 
 TEST(LazyPmdPlanner, WithoutProbesItStillSolves) {
-  PlannerParameters parameters = toy::withSeed(4);
+  PlannerSettings parameters = toy::withSeed(4);
   parameters.lazy.probes = 0;
   LazyToyRun run(parameters);
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);

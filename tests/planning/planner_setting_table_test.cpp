@@ -17,17 +17,17 @@ const PlannerSetting& settingNamed(const std::string& flag) {
 
 TEST(PlannerSettingTable, FlagsAreUniqueAndEveryValueReadsBack) {
   std::set<std::string> flags;
-  const PlannerParameters defaults = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  const PlannerSettings defaults = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
   for (const PlannerSetting& s : plannerSettingTable()) {
     EXPECT_TRUE(flags.insert(s.flag).second) << s.flag;
     EXPECT_FALSE(s.help.empty()) << s.flag;
-    PlannerParameters p;
+    PlannerSettings p;
     s.set(p, s.get(defaults));
     EXPECT_EQ(describePlannerSettings(p), describePlannerSettings(defaults)) << s.flag;
   }
 }
 
-// Every field of PlannerParameters is reachable: setting each one to a value other than the
+// Every field of PlannerSettings is reachable: setting each one to a value other than the
 // default changes the description, and changes only that setting's part of it.
 TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
   const std::map<std::string, std::string> other = {{"rho-a", "0.05"},
@@ -55,12 +55,12 @@ TEST(PlannerSettingTable, EverySettingReachesItsOwnField) {
                                                     {"connect-probes", "4"}};
   ASSERT_EQ(other.size(), plannerSettingTable().size()) << "a new setting needs a value here";
   for (const auto& [flag, value] : other) {
-    PlannerParameters p;
+    PlannerSettings p;
     settingNamed(flag).set(p, value);
     EXPECT_EQ(settingNamed(flag).get(p), value);
     EXPECT_NO_THROW(p.check()) << flag;
     for (const PlannerSetting& s : plannerSettingTable())
-      if (s.flag != flag) EXPECT_EQ(s.get(p), s.get(PlannerParameters{})) << flag << " changed " << s.flag;
+      if (s.flag != flag) EXPECT_EQ(s.get(p), s.get(PlannerSettings{})) << flag << " changed " << s.flag;
   }
 }
 
@@ -72,7 +72,7 @@ TEST(PlannerSettingTable, MalformedTextNamesTheFlag) {
                                                      {"smooth", "yes"},      {"rho-a-growth", "Factorial"},
                                                      {"time-limit", "1e999"}};
   for (const auto& [flag, text] : bad) {
-    PlannerParameters p;
+    PlannerSettings p;
     try {
       settingNamed(flag).set(p, text);
       ADD_FAILURE() << "--" << flag << " accepted '" << text << "'";

@@ -22,7 +22,7 @@ struct ConnectToyRun {
   toy::WallMotionValidator motionValidator;
   PmdConnectPlanner planner;
 
-  explicit ConnectToyRun(PlannerParameters parameters, toy::Wall wall = {}, const Configuration& start = toy::start(),
+  explicit ConnectToyRun(PlannerSettings parameters, toy::Wall wall = {}, const Configuration& start = toy::start(),
                          const Configuration& goal = toy::goal())
       : stateValidator(wall),
         motionValidator(wall),
@@ -110,7 +110,7 @@ TEST(PmdConnectPlanner, TheSameSeedGivesTheSamePath) {
 }
 
 TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
-  PlannerParameters parameters = toy::withSeed(2);
+  PlannerSettings parameters = toy::withSeed(2);
   parameters.maxSamples = 500;
   ConnectToyRun closed(parameters, toy::Wall{false});
   EXPECT_EQ(closed.planner.solve(), PlannerStatus::SampleLimit);
@@ -123,10 +123,10 @@ TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
   parameters.connect.armGrowth = 1.0;
   ConnectToyRun fixed(parameters);
   ASSERT_EQ(fixed.planner.solve(), PlannerStatus::Solved);
-  EXPECT_EQ(fixed.planner.statistics().finalArmHalfSize, parameters.initialArmHalfSize);
+  EXPECT_EQ(fixed.planner.statistics().finalArmHalfSize, parameters.rhoA);
   for (const Configuration& q : fixed.planner.unsmoothedPath()) {
     const Eigen::VectorXd u = toy::space().normalise(q);
-    EXPECT_NEAR(u[1], 0.5, parameters.initialArmHalfSize + 1e-12) << "the elbow stays in the box around the segment";
+    EXPECT_NEAR(u[1], 0.5, parameters.rhoA + 1e-12) << "the elbow stays in the box around the segment";
   }
 }
 
@@ -139,13 +139,13 @@ TEST(PmdConnectPlanner, ACollidingStartOrGoalIsReported) {
 }
 
 TEST(PmdConnectPlanner, ShortStepsProbesOffAndEverySequenceStillSolve) {
-  for (const auto& change : std::vector<void (*)(PlannerParameters&)>{
-           [](PlannerParameters& p) { p.connect.rangeFactor = 0.1; },
-           [](PlannerParameters& p) { p.connect.rangeFactor = std::numeric_limits<double>::infinity(); },
-           [](PlannerParameters& p) { p.connect.probes = 0; },
-           [](PlannerParameters& p) { p.sequence = SampleSequence::Halton; },
-           [](PlannerParameters& p) { p.sequence = SampleSequence::Sdk; }}) {
-    PlannerParameters parameters = toy::withSeed(5);
+  for (const auto& change : std::vector<void (*)(PlannerSettings&)>{
+           [](PlannerSettings& p) { p.connect.range = 0.1; },
+           [](PlannerSettings& p) { p.connect.range = std::numeric_limits<double>::infinity(); },
+           [](PlannerSettings& p) { p.connect.probes = 0; },
+           [](PlannerSettings& p) { p.sequence = SampleSequence::Halton; },
+           [](PlannerSettings& p) { p.sequence = SampleSequence::Sdk; }}) {
+    PlannerSettings parameters = toy::withSeed(5);
     change(parameters);
     ConnectToyRun run(parameters);
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
@@ -156,7 +156,7 @@ TEST(PmdConnectPlanner, ShortStepsProbesOffAndEverySequenceStillSolve) {
 
 TEST(PmdConnectPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
   const auto expectRejected = [](const std::string& flag, auto change) {
-    PlannerParameters parameters = toy::withSeed(1);
+    PlannerSettings parameters = toy::withSeed(1);
     change(parameters.connect);
     ConnectToyRun run(parameters);
     try {
@@ -167,9 +167,9 @@ TEST(PmdConnectPlanner, BadSettingsAreInputErrorsNamingTheFlag) {
       EXPECT_FALSE(e.message().empty());
     }
   };
-  expectRejected("connect-range", [](PmdConnectSettings& s) { s.rangeFactor = 0.0; });
-  expectRejected("connect-range", [](PmdConnectSettings& s) { s.rangeFactor = std::nan(""); });
-  expectRejected("connect-round", [](PmdConnectSettings& s) { s.roundSamples = 0; });
+  expectRejected("connect-range", [](PmdConnectSettings& s) { s.range = 0.0; });
+  expectRejected("connect-range", [](PmdConnectSettings& s) { s.range = std::nan(""); });
+  expectRejected("connect-round", [](PmdConnectSettings& s) { s.round = 0; });
   expectRejected("connect-arm-growth", [](PmdConnectSettings& s) { s.armGrowth = 0.5; });
   expectRejected("connect-arm-growth", [](PmdConnectSettings& s) { s.armGrowth = INFINITY; });
   expectRejected("connect-probes", [](PmdConnectSettings& s) { s.probes = 65; });

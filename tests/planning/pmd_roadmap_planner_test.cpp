@@ -41,7 +41,7 @@ struct ToyRun {
   toy::WallMotionValidator motionValidator;
   PmdRoadmapPlanner planner;
 
-  explicit ToyRun(PlannerParameters parameters, HandSamplingMode mode = HandSamplingMode::Synergy, toy::Wall wall = {})
+  explicit ToyRun(PlannerSettings parameters, HandSamplingMode mode = HandSamplingMode::Synergy, toy::Wall wall = {})
       : stateValidator(wall),
         motionValidator(wall),
         planner(toy::space(), stateValidator, motionValidator, makeSampler(mode), parameters) {
@@ -171,7 +171,7 @@ TEST(PmdRoadmapPlanner, HandDimensionGrowsFromTwoToTheMaximum) {
   toy::WallMotionValidator motionValidator;
   const SynergyModel model = toy::synergyModel();
   std::vector<int> recorded;
-  PlannerParameters parameters = toy::withSeed(1);
+  PlannerSettings parameters = toy::withSeed(1);
   parameters.maxSamples = 30;  // N bounds the samples (hand-arm draws): n_H = 10 for each of 3 arms
   PmdRoadmapPlanner planner(
       toy::space(), stateValidator, motionValidator,
@@ -200,7 +200,7 @@ TEST(PmdRoadmapPlanner, NodesRecordTheDimensionThatMadeThem) {
 }
 
 TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheSampleLimit) {
-  PlannerParameters parameters = toy::withSeed(3);
+  PlannerSettings parameters = toy::withSeed(3);
   parameters.maxSamples = 50'000;
   ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
   EXPECT_EQ(run.planner.solve(), PlannerStatus::SampleLimit);
@@ -228,8 +228,8 @@ class FixedAnswers : public StateValidator {
 // k·rho_a(1) with the linear reading; every sweep starts from the whole segment.
 TEST(PmdRoadmapPlanner, ArmBoxesGrowSweepBySweep) {
   for (const ArmBoxGrowth growth : {ArmBoxGrowth::Factorial, ArmBoxGrowth::Linear}) {
-    PlannerParameters parameters = toy::withSeed(3);
-    parameters.armBoxGrowth = growth;
+    PlannerSettings parameters = toy::withSeed(3);
+    parameters.rhoAGrowth = growth;
     parameters.maxSamples = 40000;
     FixedAnswers stateValidator(true, false);  // start and goal free, every arm draw in self-collision
     toy::WallMotionValidator motionValidator;
@@ -278,12 +278,12 @@ class GoalUnreachable : public MotionValidator {
 };
 
 // Once c_ini's component reaches the goal's hypercube, the search range is that hypercube alone:
-// a sweep then passes over it again (while it still adds nodes) until minSweepVisits visits,
+// a sweep then passes over it again (while it still adds nodes) until sweepVisits visits,
 // rather than growing rho_a after one or two.
 TEST(PmdRoadmapPlanner, ANarrowSearchRangeIsPassedOverAgainBeforeRhoGrows) {
   for (const std::size_t minimum : {std::size_t{1}, std::size_t{10}}) {
-    PlannerParameters parameters = toy::withSeed(5);
-    parameters.minSweepVisits = minimum;
+    PlannerSettings parameters = toy::withSeed(5);
+    parameters.sweepVisits = minimum;
     parameters.maxSamples = 400;
     FixedAnswers stateValidator(true, true);
     GoalUnreachable motionValidator;
@@ -305,7 +305,7 @@ TEST(PmdRoadmapPlanner, ANarrowSearchRangeIsPassedOverAgainBeforeRhoGrows) {
 }
 
 TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheTimeLimit) {
-  PlannerParameters parameters = toy::withSeed(3);
+  PlannerSettings parameters = toy::withSeed(3);
   parameters.maxSamples = std::numeric_limits<std::size_t>::max();
   parameters.timeLimit = 0.2;
   ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
@@ -346,8 +346,8 @@ TEST(PmdRoadmapPlanner, SetupRejectsMalformedProblems) {
 // except the edges to a forced neighbour.
 TEST(PmdRoadmapPlanner, EdgesRespectTheNeighbourThreshold) {
   for (const double factor : {0.5, 1.0, 3.0}) {
-    PlannerParameters parameters = toy::withSeed(6);
-    parameters.neighbourThresholdFactor = factor;
+    PlannerSettings parameters = toy::withSeed(6);
+    parameters.neighbourThreshold = factor;
     ToyRun run(parameters);
     run.planner.solve();
     const Roadmap& roadmap = run.planner.roadmap();

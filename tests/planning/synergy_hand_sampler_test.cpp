@@ -104,7 +104,7 @@ TEST(SynergyHandSampler, TheSameSeedGivesTheSameSamples) {
   }
 }
 
-void expectRejected(const SynergyModel& model, const std::string& field, SynergySamplingParameters parameters = {}) {
+void expectRejected(const SynergyModel& model, const std::string& field, SynergySamplingSettings parameters = {}) {
   try {
     SynergyHandSampler sampler(toy::space(), model, parameters);
     ADD_FAILURE() << "accepted a bad model (expected an error on " << field << ")";

@@ -17,7 +17,7 @@
 
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
 
@@ -58,8 +58,8 @@ inline Configuration fromUnit(std::initializer_list<double> unit) {
 }
 
 /// The planner's defaults for `mode` with `seed` and a 60 s limit that a test's run never reaches.
-inline PlannerParameters withSeed(std::uint64_t seed, HandSamplingMode mode = HandSamplingMode::Synergy) {
-  PlannerParameters parameters = PlannerParameters::defaultsFor(mode);
+inline PlannerSettings withSeed(std::uint64_t seed, HandSamplingMode mode = HandSamplingMode::Synergy) {
+  PlannerSettings parameters = PlannerSettings::defaultsFor(mode);
   parameters.seed = seed;
   parameters.timeLimit = 60.0;
   return parameters;

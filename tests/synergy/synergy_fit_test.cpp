@@ -53,7 +53,7 @@ AnalyticCase analyticCase() {
   return c;
 }
 
-SynergyFitOptions ownSpin() { return SynergyFitOptions{{"spin"}}; }
+SynergyFitSettings ownSpin() { return SynergyFitSettings{{"spin"}}; }
 
 TEST(SynergyFit, RecoversKnownDirectionsAndVariances) {
   const AnalyticCase c = analyticCase();
@@ -142,7 +142,7 @@ TEST(SynergyFit, PosturesBeyondTheLimitsAreAnError) {
 
 TEST(SynergyFit, UnknownOwnAxisJointIsAnError) {
   test::expectInputError(
-      [] { fitSynergyModel(analyticCase().postures, testJoints(), SynergyFitOptions{{"thumb"}}, {}); }, "", "own-axis",
+      [] { fitSynergyModel(analyticCase().postures, testJoints(), SynergyFitSettings{{"thumb"}}, {}); }, "", "own-axis",
       "'thumb' is not one of the hand joints");
 }
 

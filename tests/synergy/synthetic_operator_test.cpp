@@ -36,7 +36,7 @@ class PaperSizedRecording : public ::testing::Test {
   static void SetUpTestSuite() {
     const JointLimits joints = test::sahHandJoints();
     const HandMapping mapping = paperMapping();
-    SyntheticOperatorParameters parameters;  // 13,500 frames, seed 1
+    SyntheticOperatorSettings parameters;  // 13,500 frames, seed 1
     const SyntheticGloveSession session = synthesiseGloveSession(parameters, mapping, joints);
     csv_ = new std::string(formatGloveCsv(session.recording));
     calibrationText_ = new std::string(formatGloveCalibration(session.calibration));
@@ -44,7 +44,7 @@ class PaperSizedRecording : public ::testing::Test {
     const GloveRecording recording = parseGloveCsv(*csv_, "synthetic.csv");
     const GloveCalibration calibration = parseGloveCalibration(*calibrationText_, "synthetic.calibration.yaml");
     analysis_ = new RecordingAnalysis(
-        analyseRecording(recording, calibration, mapping, joints, SynergyFitOptions{{"thumb_base"}}, "test"));
+        analyseRecording(recording, calibration, mapping, joints, SynergyFitSettings{{"thumb_base"}}, "test"));
   }
   static void TearDownTestSuite() {
     delete analysis_;
@@ -105,7 +105,7 @@ TEST_F(PaperSizedRecording, FilesSayTheyAreSynthetic) {
 TEST(SyntheticOperator, SameSeedGivesIdenticalBytesAndAnotherSeedDoesNot) {
   const JointLimits joints = test::sahHandJoints();
   const HandMapping mapping = paperMapping();
-  SyntheticOperatorParameters parameters;
+  SyntheticOperatorSettings parameters;
   parameters.frames = 600;
   parameters.seed = 7;
   const auto first = synthesiseGloveSession(parameters, mapping, joints);
@@ -118,7 +118,7 @@ TEST(SyntheticOperator, SameSeedGivesIdenticalBytesAndAnotherSeedDoesNot) {
 }
 
 TEST(SyntheticOperator, WritesRawCountsTheGloveCanSend) {
-  SyntheticOperatorParameters parameters;
+  SyntheticOperatorSettings parameters;
   parameters.frames = 500;
   const auto session = synthesiseGloveSession(parameters, paperMapping(), test::sahHandJoints());
   ASSERT_EQ(session.recording.frameCount(), 500);

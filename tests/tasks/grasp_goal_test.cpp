@@ -144,7 +144,7 @@ class GraspPlanning : public ::testing::Test {
         checking_(task_, CheckerKind::Fast),
         segments_(checking_.exact(), *task_.robot),
         synergies_(loadSynergyModel(dataDirectory() / "synergies" / "sah_tx90_default.yaml")) {
-    TaskPlanningOptions options;
+    TaskPlanningSettings options;
     options.synergies = &synergies_;
     options.parameters.seed = 1;
     result_ = planTask(task_, checking_, options);

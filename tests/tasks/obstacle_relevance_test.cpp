@@ -77,12 +77,12 @@ struct PlanOutcome {
   }
 };
 
-PlanOutcome plan(const Task& task, const SynergyModel& model, std::uint64_t seed, double radiusFactor) {
+PlanOutcome plan(const Task& task, const SynergyModel& model, std::uint64_t seed, double radius) {
   CollisionChecking checking(task, CheckerKind::Fast, 0.001);
-  TaskPlanningOptions options;
+  TaskPlanningSettings options;
   options.synergies = &model;
   options.parameters.seed = seed;
-  options.parameters.neighbourThresholdFactor = radiusFactor;
+  options.parameters.neighbourThreshold = radius;
   options.parameters.timeLimit = 10.0;
   const TaskPlanningResult r = planTask(task, checking, options);
   return {r.status, r.path, r.statistics.roadmapNodes, r.statistics.samples, r.statistics.armTrials};

@@ -33,7 +33,7 @@ class OurPlannerOnTask : public ::testing::TestWithParam<TaskAndPlanner> {
   }
 
   TaskPlanningResult plan(std::uint64_t seed) {
-    TaskPlanningOptions options;
+    TaskPlanningSettings options;
     options.algorithm = std::get<1>(GetParam());
     options.parameters.seed = seed;
     options.parameters.timeLimit = 60.0;

@@ -29,9 +29,9 @@ TEST(PaperClaim, TheFullSpaceNeedsFiveTimesTheSamplesAndNodesOfPmdOnTask0) {
   const SynergyModel model = loadSynergyModel(dataDirectory() / "synergies" / "sah_tx90_default.yaml");
   CollisionChecking checking(task, CheckerKind::Fast);
   const auto plan = [&](HandSamplingMode mode, int seed, std::size_t maxSamples) {
-    TaskPlanningOptions options;
+    TaskPlanningSettings options;
     options.mode = mode;
-    options.parameters = PlannerParameters::defaultsFor(mode);
+    options.parameters = PlannerSettings::defaultsFor(mode);
     options.parameters.seed = static_cast<std::uint64_t>(seed);
     options.parameters.timeLimit = std::numeric_limits<double>::infinity();  // only N bounds a run: no timing
     options.parameters.maxSamples = maxSamples;

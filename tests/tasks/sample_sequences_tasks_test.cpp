@@ -23,7 +23,7 @@ using Case = std::tuple<std::string, RoadmapAlgorithm, SampleSequence>;
 class SequenceOnTask : public ::testing::TestWithParam<Case> {};
 
 TaskPlanningResult plan(const Task& task, CollisionChecking& checking, const SynergyModel& model, std::uint64_t seed) {
-  TaskPlanningOptions options;
+  TaskPlanningSettings options;
   options.algorithm = std::get<1>(SequenceOnTask::GetParam());
   options.parameters.sequence = std::get<2>(SequenceOnTask::GetParam());
   options.parameters.seed = seed;

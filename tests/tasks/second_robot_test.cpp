@@ -178,7 +178,7 @@ TEST(SecondRobot, PmdSolvesEverySeedWithAValidPath) {
   CollisionChecking checking(task, CheckerKind::Fast);
   SegmentChecker segments(checking.exact(), *task.robot, checking.tolerance());
   for (std::uint64_t seed = 1; seed <= test::trials(5, 1); ++seed) {
-    TaskPlanningOptions options;
+    TaskPlanningSettings options;
     options.parameters.seed = seed;
     options.parameters.timeLimit = 60.0;
     options.synergies = &synergies;

@@ -7,11 +7,11 @@
 
 #include "pmdplan/collision/checker_kind.hpp"
 #include "pmdplan/collision/segment_checker.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 
 namespace pmdplan {
 
-struct BenchOptions {
+struct BenchSettings {
   /// Built-in task names or task files (default: the paper's five tasks).
   std::vector<std::string> tasks = {"can_on_table", "cans_on_desk", "can_in_box", "cans_in_shelf", "t_in_clutter"};
   /// Names from plannerRoster().
@@ -26,8 +26,8 @@ struct BenchOptions {
   double graceSeconds = 60.0;
   /// Our planners' settings (planner_setting_table.hpp) for each hand sampling mode; every run
   /// takes its seed and the time limit above instead of theirs.
-  PlannerParameters pmdParameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
-  PlannerParameters fullParameters = PlannerParameters::defaultsFor(HandSamplingMode::FullSpace);
+  PlannerSettings pmdParameters = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
+  PlannerSettings fullParameters = PlannerSettings::defaultsFor(HandSamplingMode::FullSpace);
   CheckerKind checker = CheckerKind::Fast;
   /// Motion-check resolution of every planner and of the validation, metres.
   double toleranceMetres = SegmentChecker::kDefaultTolerance;
@@ -46,7 +46,7 @@ struct BenchOptions {
   /// part way). Needs a journal.
   bool reportOnly = false;
 
-  const PlannerParameters& roadmapParameters(HandSamplingMode mode) const {
+  const PlannerSettings& roadmapParameters(HandSamplingMode mode) const {
     return mode == HandSamplingMode::Synergy ? pmdParameters : fullParameters;
   }
 };
@@ -58,7 +58,7 @@ struct BenchOptions {
 /// tolerance that is not positive, no task, an output (file named, field "--csv", "--markdown",
 /// "--ompl-log", "--plot") whose folder does not exist, or a report ("--report") without a journal. Tasks themselves
 /// are checked when loaded.
-void checkBenchOptions(const BenchOptions& options);
+void checkBenchOptions(const BenchSettings& options);
 
 /// Splits "a,b,c" at commas (empty items kept, so checkBenchOptions can name them).
 std::vector<std::string> splitList(const std::string& text);

@@ -18,7 +18,7 @@
 #include "pmdplan/bench/run_record.hpp"
 #include "pmdplan/bench/task_bench.hpp"
 #include "pmdplan/io/files/path_file.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 
 namespace pmdplan {
 
@@ -26,7 +26,7 @@ namespace pmdplan {
 /// our planners, only the seed and the time limit for OMPL's. An OMPL planner sets OMPL's
 /// process-wide seed, so call this in a fresh process per run (forked_run.hpp). A solved run's
 /// smoothed path is put in `path` when it is not null (untouched otherwise).
-RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerParameters& parameters,
+RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerSettings& parameters,
                          PathFile* path = nullptr);
 
 /// Validates the solved run's path and measures it into `record` (the time to certify its approach

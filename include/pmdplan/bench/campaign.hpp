@@ -22,13 +22,13 @@ class CampaignJournal;
 class CampaignRanks;
 
 struct CampaignJob {
-  std::size_t task = 0;     ///< index into BenchOptions::tasks
-  std::size_t planner = 0;  ///< index into BenchOptions::planners
+  std::size_t task = 0;     ///< index into BenchSettings::tasks
+  std::size_t planner = 0;  ///< index into BenchSettings::planners
   int run = 0;
 };
 
 /// Task-major, then planner, then run.
-std::vector<CampaignJob> campaignJobs(const BenchOptions& options);
+std::vector<CampaignJob> campaignJobs(const BenchSettings& options);
 /// The next job index to run (CampaignRanks::takeJob): each index once, in increasing order over
 /// all ranks; the campaign's job count or more when none is left.
 using CampaignJobSource = std::function<std::size_t()>;
@@ -42,30 +42,30 @@ using CampaignProgress = std::function<void(std::size_t done, std::size_t total,
 struct CampaignInputs {
   /// The synergy models by file, behind pointers: the benches keep their addresses.
   std::map<std::string, std::unique_ptr<SynergyModel>> synergies;
-  std::vector<std::unique_ptr<TaskBench>> tasks;  ///< one per BenchOptions::tasks entry
+  std::vector<std::unique_ptr<TaskBench>> tasks;  ///< one per BenchSettings::tasks entry
 };
 /// Reads the tasks and the synergy models (options.synergies for every task, or each task's robot's
 /// shipped model, so tasks of several robots share a campaign) and builds the checkers of
 /// options.checker.
-CampaignInputs loadCampaignInputs(const BenchOptions& options);
+CampaignInputs loadCampaignInputs(const BenchSettings& options);
 
 /// Runs the jobs `nextJob` hands out (indices into campaignJobs(options)) until it hands out none,
 /// each in a forked child that is killed after time limit + grace. Records come back by job index; a crashed,
 /// killed or failing child gives a record with solved = false, the reason in `failure` and the
 /// child's wall-clock time as its planning time. With a journal, jobs it holds are not run again
 /// and every job run is added to it.
-std::map<std::size_t, RunRecord> runCampaignJobs(const BenchOptions& options, CampaignInputs& inputs,
+std::map<std::size_t, RunRecord> runCampaignJobs(const BenchSettings& options, CampaignInputs& inputs,
                                                  const CampaignJobSource& nextJob,
                                                  const CampaignProgress& progress = {},
                                                  CampaignJournal* journal = nullptr);
 
 /// The records of the jobs options.journal holds, in job order, nothing run: the report of a
 /// campaign part way. Throws InputError as CampaignJournal::finishedJobs does.
-std::vector<RunRecord> finishedCampaignRecords(const BenchOptions& options);
+std::vector<RunRecord> finishedCampaignRecords(const BenchSettings& options);
 
 /// The whole campaign on every rank of `ranks` (with options.journal, resumed from it): rank 0
 /// returns all records in job order, the other ranks return nothing.
-std::vector<RunRecord> runCampaign(const BenchOptions& options, CampaignInputs& inputs, CampaignRanks& ranks,
+std::vector<RunRecord> runCampaign(const BenchSettings& options, CampaignInputs& inputs, CampaignRanks& ranks,
                                    const CampaignProgress& progress = {});
 
 }  // namespace pmdplan

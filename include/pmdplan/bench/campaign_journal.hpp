@@ -22,7 +22,7 @@ class CampaignJournal {
  public:
   /// Creates the folder if needed and reads what it holds. Throws InputError (field "--journal")
   /// naming the file if one belongs to another campaign or cannot be read.
-  CampaignJournal(const std::filesystem::path& folder, const BenchOptions& options, int rank);
+  CampaignJournal(const std::filesystem::path& folder, const BenchSettings& options, int rank);
 
   /// The record of a job finished before, if any.
   const RunRecord* find(std::size_t job) const;
@@ -31,13 +31,13 @@ class CampaignJournal {
   std::size_t recordCount() const { return records_.size(); }
 
   /// The first line of every file of this campaign's journal.
-  static std::string header(const BenchOptions& options);
+  static std::string header(const BenchSettings& options);
 
   /// The finished jobs of the journal in `folder`, read without creating or adding anything (the
   /// report of a campaign still running). Throws InputError like the constructor, and if the
   /// folder does not exist.
   static std::map<std::size_t, RunRecord> finishedJobs(const std::filesystem::path& folder,
-                                                       const BenchOptions& options);
+                                                       const BenchSettings& options);
 
  private:
   std::filesystem::path file_;

@@ -4,7 +4,7 @@
 // PMDs) and how unusual they are under the synergy model (Mahalanobis distance).
 //
 // Evaluated along the path, not only at its nodes: the path is walked at a fixed step in the
-// normalised joint space (HumanLikenessOptions::step) and every point counts once, so the means
+// normalised joint space (HumanLikenessSettings::step) and every point counts once, so the means
 // are arc-length weighted and a long segment through odd postures weighs more than a short one.
 // The distance of a straight joint-space segment from the (affine) subspace is convex along the
 // segment, so the maximum sits at a node and the walk (which includes the nodes) finds it exactly.
@@ -21,12 +21,12 @@
 
 namespace pmdplan {
 
-struct HumanLikenessOptions {
+struct HumanLikenessSettings {
   /// Walking step along the path, normalised joint units (all joints): 1 % of a joint's range.
   double step = 0.01;
   /// Directions of the subspace besides the own axes: the PMD planner's largest hand subspace
-  /// (SynergySamplingParameters::maxDirections), capped by the model's count.
-  int subspaceDirections = SynergySamplingParameters{}.maxDirections;
+  /// (SynergySamplingSettings::maxPmds), capped by the model's count.
+  int subspaceDirections = SynergySamplingSettings{}.maxPmds;
   /// Directions whose sigma is below this (normalised units) are left out of the Mahalanobis sum:
   /// they carry no variance to divide by.
   double minimumSigma = 1e-9;
@@ -36,6 +36,6 @@ struct HumanLikenessOptions {
 /// A path of one point is measured at that point. Throws std::invalid_argument for an empty path.
 HumanLikeness measureHumanLikeness(const std::vector<Configuration>& path, const PlanningSpace& space,
                                    const SynergyModel& model, const std::vector<int>& slots,
-                                   const HumanLikenessOptions& options = {});
+                                   const HumanLikenessSettings& options = {});
 
 }  // namespace pmdplan

@@ -11,7 +11,7 @@
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"
 #include "pmdplan/model/configuration.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/synergy_hand_sampler.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
@@ -45,7 +45,7 @@ struct OmplPmdSampling {
   const SynergyModel* synergies = nullptr;
   /// Of these: the PMD box, rho_a, the arm region's growth (connect-arm-growth, connect-round) and
   /// the sequence.
-  PlannerParameters parameters;
+  PlannerSettings parameters;
 };
 
 /// One run. Sets OMPL's process-wide seed (ompl::RNG::setSeed), which OMPL honours only before its

@@ -25,7 +25,7 @@
 #include <optional>
 
 #include "pmdplan/planning/hand_sampling_mode.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
 #include "pmdplan/synergy/synergy_model.hpp"
@@ -49,8 +49,8 @@ class OmplPmdPlanner : public ompl::base::Planner {
   /// The states stay valid until the next solve(), getPlannerData() or clear().
   void getPlannerData(ompl::base::PlannerData& data) const override;
 
-  PlannerParameters& parameters() { return parameters_; }
-  const PlannerParameters& parameters() const { return parameters_; }
+  PlannerSettings& parameters() { return parameters_; }
+  const PlannerSettings& parameters() const { return parameters_; }
   /// Of the last run (also what getPlannerData's properties report).
   const PlanningStatistics& statistics() const { return statistics_; }
 
@@ -63,7 +63,7 @@ class OmplPmdPlanner : public ompl::base::Planner {
   PlanningSpace space_;
   HandSamplingMode mode_;
   std::shared_ptr<const SynergyModel> synergies_;
-  PlannerParameters parameters_;
+  PlannerSettings parameters_;
   ompl::RNG rng_;
   std::unique_ptr<PmdRoadmapPlanner> planner_;  ///< of the last run, kept for getPlannerData
   PlanningStatistics statistics_;

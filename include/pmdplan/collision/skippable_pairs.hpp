@@ -12,7 +12,7 @@
 
 namespace pmdplan {
 
-struct SkippablePairParams {
+struct SkippablePairSettings {
   std::size_t samples = 50000;  ///< uniform configurations over the whole joint box
   std::uint64_t seed = 1;
   /// The home (ready) pose: pairs in contact there are skipped as Default, so that the pose is
@@ -27,7 +27,7 @@ struct SkippablePair {
 };
 
 /// `model` should be loaded without disabled pairs (groups only) so every pair is tested.
-std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const SkippablePairParams& params = {});
+std::vector<SkippablePair> findSkippablePairs(const RobotModel& model, const SkippablePairSettings& params = {});
 
 /// True when the two links hang from different branches below their common ancestor link.
 bool onDifferentBranches(const RobotModel& model, int linkA, int linkB);

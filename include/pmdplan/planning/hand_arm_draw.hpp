@@ -12,7 +12,7 @@
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planner_run.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
@@ -25,7 +25,7 @@ struct HandArmSources {
   const ArmSegmentSampler& arm;
   const HandSampler& hand;
   StateValidator& validator;
-  const PlannerParameters& parameters;
+  const PlannerSettings& parameters;
 };
 
 /// A free hand-arm sample with the hand dimension it was drawn at, nothing, or a reason to stop.

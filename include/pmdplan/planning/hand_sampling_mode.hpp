@@ -25,6 +25,6 @@ std::optional<HandSamplingMode> parseHandSamplingMode(const std::string& name);
 /// ignores it.
 std::unique_ptr<HandSampler> makeHandSampler(HandSamplingMode mode, const PlanningSpace& space,
                                              const SynergyModel* model,
-                                             const SynergySamplingParameters& parameters = {});
+                                             const SynergySamplingSettings& parameters = {});
 
 }  // namespace pmdplan

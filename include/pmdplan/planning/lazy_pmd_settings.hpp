@@ -1,7 +1,7 @@
 #pragma once
 // The settings of the lazy PMD planner (lazy_pmd_planner.hpp) that the paper's planner does not
 // have. The ones both share (rho_a, kappa, max-pmds, n_H, time limit, seed, smoothing) stay in
-// PlannerParameters; these live there as its `lazy` field, so the command line reaches them
+// PlannerSettings; these live there as its `lazy` field, so the command line reaches them
 // through planner_setting_table.hpp like every other setting.
 #include <cstddef>
 
@@ -16,7 +16,7 @@ struct LazyPmdSettings {
   std::size_t neighbours = 10;
   /// Lazy edges join nodes at most this multiple of d(c_ini, c_goal) apart. Default 1 (the
   /// paper's neighbour radius).
-  double radiusFactor = 1.0;
+  double radius = 1.0;
   /// States inside each edge of a candidate path checked one by one (evenly spaced, midpoint
   /// first) before any edge gets its full motion check: a blocked candidate is most often
   /// rejected by these few state checks instead of by motion checks. 0: none. Default 10.

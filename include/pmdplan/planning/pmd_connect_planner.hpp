@@ -38,7 +38,7 @@ class PmdConnectPlanner : public PmdPlannerBase {
   /// n_A, n_H, N, the PMD box (through the hand sampler), the time limit, the seed, the sequence,
   /// smoothing and the `connect` settings.
   PmdConnectPlanner(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
-                    std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters = {});
+                    std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters = {});
 
   /// Throws InputError for bad parameters, std::invalid_argument for a malformed space or problem.
   void setup();

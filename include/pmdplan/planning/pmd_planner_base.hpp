@@ -16,7 +16,7 @@
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planner_run.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
@@ -37,13 +37,13 @@ class PmdPlannerBase {
   const std::vector<Configuration>& unsmoothedPath() const { return unsmoothedPath_; }
   const PlanningStatistics& statistics() const { return statistics_; }
   const PlanningSpace& space() const { return space_; }
-  const PlannerParameters& parameters() const { return parameters_; }
+  const PlannerSettings& parameters() const { return parameters_; }
   const HandSampler& handSampler() const { return *handSampler_; }
 
  protected:
   /// The validators are borrowed and must outlive the planner; `name` heads its error messages.
   PmdPlannerBase(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
-                 std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters, std::string name);
+                 std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters, std::string name);
   ~PmdPlannerBase() = default;
 
   /// Checks the parameters, the space and the problem and places the arm sampler on the segment.
@@ -64,7 +64,7 @@ class PmdPlannerBase {
   StateValidator& stateValidator_;
   MotionValidator& motionValidator_;
   std::unique_ptr<HandSampler> handSampler_;
-  PlannerParameters parameters_;
+  PlannerSettings parameters_;
 
   Configuration start_;
   Configuration goal_;

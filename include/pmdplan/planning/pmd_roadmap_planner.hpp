@@ -33,7 +33,7 @@ class PmdRoadmapPlanner : public PmdPlannerBase {
  public:
   /// The validators are borrowed and must outlive the planner.
   PmdRoadmapPlanner(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
-                    std::unique_ptr<HandSampler> handSampler, PlannerParameters parameters = {});
+                    std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters = {});
 
   void setProgressCallback(ProgressCallback callback) { progress_ = std::move(callback); }
 

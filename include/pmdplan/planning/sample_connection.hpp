@@ -16,7 +16,7 @@ namespace pmdplan {
 std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, std::size_t count, double threshold);
 
 struct ConnectionRule {
-  std::size_t neighbourCount = 10;  ///< K
+  std::size_t neighbours = 10;  ///< K
   double threshold = 0.0;           ///< neighbouring threshold, d(c_ini, c_goal)
 };
 

@@ -12,11 +12,11 @@
 
 namespace pmdplan {
 
-struct SynergySamplingParameters {
+struct SynergySamplingSettings {
   /// lambda_i = kappa·sigma_i: the box half-width along PMD i in standard deviations (default 2).
   double kappa = 2.0;
   /// Most PMDs ever used (the paper's runs needed thumb base + 4 PMDs); capped by the model's count.
-  int maxDirections = 4;
+  int maxPmds = 4;
 };
 
 class SynergyHandSampler final : public HandSampler {
@@ -24,7 +24,7 @@ class SynergyHandSampler final : public HandSampler {
   /// Throws InputError (no file; field "kappa" or "max_directions") if a parameter is out of range,
   /// and checkSynergyModelFitsHand's error (synergy/hand_fit.hpp, no file) if the model does not fit
   /// the space's hand.
-  SynergyHandSampler(const PlanningSpace& space, const SynergyModel& model, SynergySamplingParameters parameters = {});
+  SynergyHandSampler(const PlanningSpace& space, const SynergyModel& model, SynergySamplingSettings parameters = {});
 
   /// Own-axis joints + 1 PMD: 2 for the SAH.
   int initialDimension() const override { return ownAxisCount() + 1; }
@@ -33,7 +33,7 @@ class SynergyHandSampler final : public HandSampler {
   std::string name() const override { return "pmd"; }
 
   int ownAxisCount() const { return static_cast<int>(ownAxisSlots_.size()); }
-  /// PMDs in use (model's count capped by maxDirections).
+  /// PMDs in use (model's count capped by maxPmds).
   int directionCount() const { return static_cast<int>(halfWidths_.size()); }
 
  private:

@@ -24,10 +24,10 @@ enum class RoadmapAlgorithm {
   Connect,  ///< the bidirectional PMD trees (pmd_connect_planner.hpp): `pmd-connect`
 };
 
-struct TaskPlanningOptions {
+struct TaskPlanningSettings {
   RoadmapAlgorithm algorithm = RoadmapAlgorithm::Paper;
   HandSamplingMode mode = HandSamplingMode::Synergy;
-  PlannerParameters parameters = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
+  PlannerSettings parameters = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
   const SynergyModel* synergies = nullptr;  ///< required for the Synergy mode
   GraspSettings grasp;                      ///< how a pre-grasp is derived for a grasp goal
 };
@@ -63,7 +63,7 @@ std::optional<std::size_t> appendClosing(const Task& task, const TaskApproach& a
 /// Throws InputError for a model that does not fit the robot's hand (field as the sampler names
 /// it, no file), for bad parameters, and (naming the task file) for a goal that touches anything
 /// but the target with the hand or whose pre-grasp cannot be found.
-TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningOptions& options,
+TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningSettings& options,
                             ProgressCallback progress = {});
 
 }  // namespace pmdplan

@@ -19,6 +19,6 @@ struct RecordingAnalysis {
 
 RecordingAnalysis analyseRecording(const GloveRecording& recording, const GloveCalibration& calibration,
                                    const HandMapping& mapping, const JointLimits& handJoints,
-                                   const SynergyFitOptions& options, const std::string& provenance);
+                                   const SynergyFitSettings& options, const std::string& provenance);
 
 }  // namespace pmdplan

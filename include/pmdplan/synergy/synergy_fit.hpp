@@ -12,7 +12,7 @@
 
 namespace pmdplan {
 
-struct SynergyFitOptions {
+struct SynergyFitSettings {
   /// Joints kept as axes of their own and left out of the PCA (default: none).
   std::vector<std::string> ownAxisJoints;
   /// A joint whose normalised values span no more than this over all frames is constant.
@@ -41,7 +41,7 @@ struct SynergyFit {
 /// `postures`: one row per frame, one column per joint of `joints` (rad). Throws InputError naming
 /// the source for an own-axis joint the robot lacks, fewer frames than PCA joints + 1, a posture
 /// outside the limits, and data in which every PCA joint is constant.
-SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitOptions& options,
+SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitSettings& options,
                            const PostureSource& source);
 
 }  // namespace pmdplan

@@ -18,7 +18,7 @@ namespace pmdplan {
 /// The most frames a synthetic recording may have: 10^6 (2.8 h at 100 Hz, about 90 MB of CSV).
 inline constexpr int kMaxSyntheticFrames = 1000000;
 
-struct SyntheticOperatorParameters {
+struct SyntheticOperatorSettings {
   int frames = 13500;  ///< the paper's data set size; 1..kMaxSyntheticFrames
   std::uint64_t seed = 1;
   double sampleRateHz = 100.0;  ///< CyberGlove rate (docs/reference_data.md §3)
@@ -40,7 +40,7 @@ const std::vector<double>& syntheticOperatorVarianceFractions();
 /// Throws InputError if the mapping cannot be inverted for the SAH's glove-driven joints (each must
 /// be driven by exactly one sensor, and each sensor must drive at most one of them) or a SAH joint
 /// is missing from `handJoints`.
-SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorParameters& parameters, const HandMapping& mapping,
+SyntheticGloveSession synthesiseGloveSession(const SyntheticOperatorSettings& parameters, const HandMapping& mapping,
                                              const JointLimits& handJoints);
 
 }  // namespace pmdplan

@@ -218,7 +218,7 @@ std::string cumulativeVarianceSvg(const SynergyModel& model) {
 }
 
 std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& joints,
-                          const SynergyPlotOptions& options) {
+                          const SynergyPlotSettings& options) {
   if (postures.cols() != static_cast<Eigen::Index>(joints.size()))
     throw std::invalid_argument("jointPairsSvg: one posture column per joint expected");
   const auto column = [&](const std::string& name) -> int {
@@ -253,7 +253,7 @@ std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& jo
 
 std::vector<std::filesystem::path> writeSynergyPlots(const std::filesystem::path& directory, const SynergyModel& model,
                                                      const Eigen::MatrixXd& postures, const JointLimits& joints,
-                                                     const SynergyPlotOptions& options) {
+                                                     const SynergyPlotSettings& options) {
   createOutputFolder(directory, "--plots");
   std::vector<std::filesystem::path> written{directory / "cumulative_variance.svg"};
   writeFileAtomically(written.back(), cumulativeVarianceSvg(model));

@@ -13,7 +13,7 @@
 
 namespace pmdplan {
 
-std::string formatPathFile(const PathFile& path, const PathFileOptions& options) {
+std::string formatPathFile(const PathFile& path, const PathFileSettings& options) {
   nlohmann::ordered_json document;
   document["task"] = path.task;
   document["planner"] = path.planner;
@@ -49,7 +49,7 @@ std::string formatPathFile(const PathFile& path, const PathFileOptions& options)
   return formatJson(document);
 }
 
-void writePathFile(const std::filesystem::path& file, const PathFile& path, const PathFileOptions& options) {
+void writePathFile(const std::filesystem::path& file, const PathFile& path, const PathFileSettings& options) {
   writeFileAtomically(file, formatPathFile(path, options));
 }
 

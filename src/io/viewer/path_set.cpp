@@ -90,7 +90,7 @@ std::string viewPathName(const ViewInput& input) {
 }
 
 void addOverlayPaths(ViewerData& data, const Task& task, const std::vector<ViewInput>& inputs,
-                     const ViewerDataParameters& parameters) {
+                     const ViewerDataSettings& parameters) {
   if (inputs.size() < 2) return;
   Json& document = data.document;
   const auto prefixed = [](const ViewInput& input, const std::string& warning) {
@@ -104,7 +104,7 @@ void addOverlayPaths(ViewerData& data, const Task& task, const std::vector<ViewI
   std::string planners = inputs.front().path.planner;
   Json overlays = Json::array();
   for (std::size_t i = 1; i < inputs.size(); ++i) {
-    ViewerDataParameters own = parameters;
+    ViewerDataSettings own = parameters;
     own.trajectory = inputs[i].trajectory ? &*inputs[i].trajectory : nullptr;
     ViewerPath path = viewerPath(task, inputs[i].path, inputs[i].file, own);
     path.json["name"] = viewPathName(inputs[i]);

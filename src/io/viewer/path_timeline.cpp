@@ -20,7 +20,7 @@ double normalisedDistance(const Configuration& a, const Configuration& b, const 
 }  // namespace
 
 PathTimeline pathTimeline(const std::vector<Configuration>& waypoints, const RobotModel& robot,
-                          const PathTimelineParameters& parameters) {
+                          const PathTimelineSettings& parameters) {
   if (waypoints.empty()) throw std::invalid_argument("pathTimeline: no waypoints");
   if (!(parameters.stateSpacing > 0.0)) throw std::invalid_argument("pathTimeline: the state spacing must be positive");
   for (const Configuration& q : waypoints)

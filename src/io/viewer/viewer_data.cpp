@@ -193,7 +193,7 @@ PathFile trajectoryAsPathFile(const TrajectoryFile& trajectory) {
 }
 
 ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesystem::path& pathFile,
-                      const ViewerDataParameters& parameters) {
+                      const ViewerDataSettings& parameters) {
   const RobotModel& robot = *task.robot;
   const std::vector<Configuration> waypoints = pathConfigurations(path, robot, pathFile.string());
   ViewerPath result;
@@ -245,7 +245,7 @@ ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesys
 }
 
 ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies,
-                      const ViewerSources& sources, const ViewerDataParameters& parameters) {
+                      const ViewerSources& sources, const ViewerDataSettings& parameters) {
   const RobotModel& robot = *task.robot;
   ViewerPath shown = viewerPath(task, path, sources.pathFile, parameters);
   const std::vector<int> slots =

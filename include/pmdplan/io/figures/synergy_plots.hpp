@@ -13,7 +13,7 @@
 
 namespace pmdplan {
 
-struct SynergyPlotOptions {
+struct SynergyPlotSettings {
   /// Most frames drawn per scatter plot (evenly spaced through the recording): a 13,500-frame
   /// recording drawn whole gives files of megabytes and no clearer picture.
   int maxScatterPoints = 3000;
@@ -28,12 +28,12 @@ std::string cumulativeVarianceSvg(const SynergyModel& model);
 /// sign convention) and the paper's finding. `postures`: one row per frame, one column per joint
 /// (rad). Throws std::invalid_argument if the sizes disagree.
 std::string jointPairsSvg(const Eigen::MatrixXd& postures, const JointLimits& joints,
-                          const SynergyPlotOptions& options = {});
+                          const SynergyPlotSettings& options = {});
 
 /// Writes cumulative_variance.svg and (if `postures` has rows) joint_pairs.svg into `directory`
 /// (created if missing) and returns the files written.
 std::vector<std::filesystem::path> writeSynergyPlots(const std::filesystem::path& directory, const SynergyModel& model,
                                                      const Eigen::MatrixXd& postures, const JointLimits& joints,
-                                                     const SynergyPlotOptions& options = {});
+                                                     const SynergyPlotSettings& options = {});
 
 }  // namespace pmdplan

@@ -49,17 +49,17 @@ struct PathFile {
   PlanningStatistics statistics;
 };
 
-struct PathFileOptions {
+struct PathFileSettings {
   /// Also write planning_time_s and smoothing_time_s (makes the file differ from run to run).
   bool includeTimings = false;
 };
 
 /// The file's text. Throws std::invalid_argument for a point whose size differs from the joint
 /// count or a value that is not finite (nothing JSON could hold).
-std::string formatPathFile(const PathFile& path, const PathFileOptions& options = {});
+std::string formatPathFile(const PathFile& path, const PathFileSettings& options = {});
 
 /// formatPathFile written atomically (a reader never sees half a file).
-void writePathFile(const std::filesystem::path& file, const PathFile& path, const PathFileOptions& options = {});
+void writePathFile(const std::filesystem::path& file, const PathFile& path, const PathFileSettings& options = {});
 
 /// Reads and checks a path file. Every problem is an InputError naming `file` and the key
 /// ("points[3].positions", "statistics.samples", ...): not JSON, unknown or missing keys, wrong

@@ -47,6 +47,6 @@ std::string viewPathName(const ViewInput& input);
 /// Adds the second and later inputs to a document viewerData() built from the first: each as an
 /// overlay path, their warnings prefixed with their file's name, the title naming every planner.
 void addOverlayPaths(ViewerData& data, const Task& task, const std::vector<ViewInput>& inputs,
-                     const ViewerDataParameters& parameters);
+                     const ViewerDataSettings& parameters);
 
 }  // namespace pmdplan

@@ -9,7 +9,7 @@
 
 namespace pmdplan {
 
-struct PathTimelineParameters {
+struct PathTimelineSettings {
   /// Largest distance between consecutive states, in normalised joint units (each joint scaled to
   /// [0, 1] by its limits; Euclidean over all active joints). 0.01 gives about 100 states per unit
   /// of path length: a smooth animation at a size a browser replays without effort.
@@ -25,6 +25,6 @@ struct PathTimeline {
 /// Throws std::invalid_argument for fewer than one waypoint, a waypoint of the wrong size or a
 /// spacing that is not positive.
 PathTimeline pathTimeline(const std::vector<Configuration>& waypoints, const RobotModel& robot,
-                          const PathTimelineParameters& parameters = {});
+                          const PathTimelineSettings& parameters = {});
 
 }  // namespace pmdplan

@@ -19,7 +19,7 @@
 //              contact_links: [[link names] per state: hand links in allowed grasp contact with the
 //                target (closing phase only)],
 //              validation: the path judged as `pmdplan validate --json` judges it
-//                (io/files/path_validation_json.hpp), at `ViewerDataParameters::toleranceMm`
+//                (io/files/path_validation_json.hpp), at `ViewerDataSettings::toleranceMm`
 //              (the last four null, with a warning, when the checker cannot load the task's geometry),
 //              timing: null, or for a timed trajectory {duration, blend_tolerance, velocity_limits,
 //                      acceleration_limits, times: [s per state], velocities: [[rad/s ...]]}}
@@ -52,8 +52,8 @@ struct ViewerSources {
   std::filesystem::path synergyFile;
 };
 
-struct ViewerDataParameters {
-  PathTimelineParameters timeline;
+struct ViewerDataSettings {
+  PathTimelineSettings timeline;
   /// The PMDs the planner samples (thumb base + this many): the viewer's default for the
   /// distance-from-subspace readout. Capped by the model's direction count.
   int plannerDirections = 4;
@@ -95,12 +95,12 @@ struct ViewerPath {
 /// Checks that the path fits the task's robot (InputError naming `pathFile`, see
 /// pathConfigurations()) and builds its "path" object.
 ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesystem::path& pathFile,
-                      const ViewerDataParameters& parameters = {});
+                      const ViewerDataSettings& parameters = {});
 
 /// Checks that the path and the synergy model fit the task's robot (InputError naming the path
 /// file or the model file otherwise, see pathConfigurations() and modelJointSlots()) and builds
 /// the document. `synergies` may be null (a robot without a model: no synergy panel).
 ViewerData viewerData(const Task& task, const PathFile& path, const SynergyModel* synergies,
-                      const ViewerSources& sources, const ViewerDataParameters& parameters = {});
+                      const ViewerSources& sources, const ViewerDataSettings& parameters = {});
 
 }  // namespace pmdplan

@@ -37,19 +37,19 @@ std::string knownPlannerPresetNames();
 /// The longest finite time limit, 10^6 s (11.6 days).
 inline constexpr double kMaxFiniteTimeLimitSeconds = 1e6;
 
-struct PlannerParameters {
+struct PlannerSettings {
   /// rho_a: initial half-size of the arm hypercubes, normalised arm-joint units (Table 3: 0.001).
   /// Sweep k uses rho_a(k) = k·rho_a(k-1), as in Algorithm 4, capped at 1 (the whole arm box).
-  double initialArmHalfSize = 0.001;
-  ArmBoxGrowth armBoxGrowth = ArmBoxGrowth::Factorial;
+  double rhoA = 0.001;
+  ArmBoxGrowth rhoAGrowth = ArmBoxGrowth::Factorial;
   /// K: most neighbours a new sample is connected to (Table 3: 10).
-  std::size_t neighbourCount = 10;
-  /// Neighbours lie within neighbourThresholdFactor · d(c_ini, c_goal), normalised full space.
+  std::size_t neighbours = 10;
+  /// Neighbours lie within neighbourThreshold · d(c_ini, c_goal), normalised full space.
   /// Sect. 5.2 and 7: the radius is d(c_ini, c_goal) itself ("not a user-defined parameter"): 1.
   /// The paper measures d over the arm joints (c^a); we measure it, like every roadmap distance,
   /// over all joints — a stated deviation (docs/deviations.md), since our neighbour search runs
   /// in the full normalised space where the hand joints count too.
-  double neighbourThresholdFactor = 1.0;
+  double neighbourThreshold = 1.0;
   /// n_A: arm configurations tried per hypercube (Table 3: 10; full-space baseline 20).
   int armTrials = 10;
   /// n_H: hand configurations tried per arm configuration (Table 3: 10; full-space baseline 20).
@@ -60,14 +60,14 @@ struct PlannerParameters {
   /// a visit or two, and rho_a would blow up to the whole arm box in seven failed tries. So a
   /// narrow range is passed over again, while its passes still add nodes, until this many visits.
   /// Not in the paper (it reports no such runs); 1 restores the literal reading. Default 10.
-  std::size_t minSweepVisits = 10;
+  std::size_t sweepVisits = 10;
   /// N: the run fails once this many samples (hand-arm draws, Table 2's "samples") have been
   /// drawn. Table 3's N = 100 (10,000) cannot bound the same count: Table 2 reports 698.82
   /// samples with no failed run. So N is large here and the time limit is the real bound.
   std::size_t maxSamples = 10'000'000;
   /// The PMD hand box: half-widths kappa·sigma_i and the most PMDs (thumb base + 4 in the paper's
   /// runs). Unused by the full-space baseline.
-  SynergySamplingParameters pmdBox;
+  SynergySamplingSettings pmdBox;
   /// Wall-clock bound of the roadmap construction, seconds, at most kMaxFiniteTimeLimitSeconds
   /// (std::chrono's clock overflows past that order) or +infinity. The only thing
   /// time is allowed to change: a run it does not stop is the same for the same seed.
@@ -86,9 +86,9 @@ struct PlannerParameters {
   PmdConnectSettings connect;
 
   /// A preset's values for a mode: Table 3's n_A = n_H = 10 for Synergy, 20 for FullSpace.
-  static PlannerParameters preset(PlannerPreset preset, HandSamplingMode mode);
+  static PlannerSettings preset(PlannerPreset preset, HandSamplingMode mode);
   /// The paper's values for a mode (preset Paper).
-  static PlannerParameters defaultsFor(HandSamplingMode mode) { return preset(PlannerPreset::Paper, mode); }
+  static PlannerSettings defaultsFor(HandSamplingMode mode) { return preset(PlannerPreset::Paper, mode); }
 
   /// Throws InputError (no file; the field named as the command-line flag without dashes, from
   /// planner_setting_table.hpp: "rho-a", "neighbours", ...) for values out of range.

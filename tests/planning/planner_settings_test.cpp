@@ -1,4 +1,4 @@
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,42 +11,42 @@
 namespace pmdplan {
 namespace {
 
-TEST(PlannerParameters, DefaultsAreTable3) {
-  const PlannerParameters pmd = PlannerParameters::defaultsFor(HandSamplingMode::Synergy);
-  EXPECT_EQ(pmd.initialArmHalfSize, 0.001);
-  EXPECT_EQ(pmd.neighbourCount, 10u);
-  EXPECT_EQ(pmd.neighbourThresholdFactor, 1.0) << "Sect. 5.2: the radius is d(c_ini, c_goal)";
-  EXPECT_EQ(pmd.armBoxGrowth, ArmBoxGrowth::Factorial) << "Algorithm 4: rho_a = k·rho_a";
+TEST(PlannerSettings, DefaultsAreTable3) {
+  const PlannerSettings pmd = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
+  EXPECT_EQ(pmd.rhoA, 0.001);
+  EXPECT_EQ(pmd.neighbours, 10u);
+  EXPECT_EQ(pmd.neighbourThreshold, 1.0) << "Sect. 5.2: the radius is d(c_ini, c_goal)";
+  EXPECT_EQ(pmd.rhoAGrowth, ArmBoxGrowth::Factorial) << "Algorithm 4: rho_a = k·rho_a";
   EXPECT_EQ(pmd.pmdBox.kappa, 2.0);
-  EXPECT_EQ(pmd.pmdBox.maxDirections, 4) << "Sect. 6.2: thumb base + up to 4 PMDs";
+  EXPECT_EQ(pmd.pmdBox.maxPmds, 4) << "Sect. 6.2: thumb base + up to 4 PMDs";
   EXPECT_EQ(pmd.armTrials, 10);
   EXPECT_EQ(pmd.handTrials, 10);
-  EXPECT_EQ(pmd.minSweepVisits, 10u) << "n_A: see planner_parameters.hpp";
+  EXPECT_EQ(pmd.sweepVisits, 10u) << "n_A: see planner_settings.hpp";
   EXPECT_GE(pmd.maxSamples, 1'000'000u) << "N large: the time limit is the real bound";
   EXPECT_NO_THROW(pmd.check());
 
-  const PlannerParameters full = PlannerParameters::defaultsFor(HandSamplingMode::FullSpace);
-  EXPECT_EQ(full.initialArmHalfSize, 0.001);
+  const PlannerSettings full = PlannerSettings::defaultsFor(HandSamplingMode::FullSpace);
+  EXPECT_EQ(full.rhoA, 0.001);
   EXPECT_EQ(full.armTrials, 20);
   EXPECT_EQ(full.handTrials, 20);
-  EXPECT_EQ(full.neighbourThresholdFactor, 1.0);
+  EXPECT_EQ(full.neighbourThreshold, 1.0);
 }
 
-TEST(PlannerParameters, PresetsDifferFromThePaperOnlyWhereTheySay) {
-  const PlannerParameters paper = PlannerParameters::preset(PlannerPreset::Paper, HandSamplingMode::Synergy);
-  const PlannerParameters kautham = PlannerParameters::preset(PlannerPreset::Kautham, HandSamplingMode::Synergy);
-  const PlannerParameters wide = PlannerParameters::preset(PlannerPreset::Wide, HandSamplingMode::FullSpace);
-  EXPECT_EQ(kautham.neighbourThresholdFactor, 4.0);
-  EXPECT_EQ(kautham.armBoxGrowth, ArmBoxGrowth::Linear);
+TEST(PlannerSettings, PresetsDifferFromThePaperOnlyWhereTheySay) {
+  const PlannerSettings paper = PlannerSettings::preset(PlannerPreset::Paper, HandSamplingMode::Synergy);
+  const PlannerSettings kautham = PlannerSettings::preset(PlannerPreset::Kautham, HandSamplingMode::Synergy);
+  const PlannerSettings wide = PlannerSettings::preset(PlannerPreset::Wide, HandSamplingMode::FullSpace);
+  EXPECT_EQ(kautham.neighbourThreshold, 4.0);
+  EXPECT_EQ(kautham.rhoAGrowth, ArmBoxGrowth::Linear);
   EXPECT_EQ(kautham.armTrials, paper.armTrials);
-  EXPECT_EQ(wide.neighbourThresholdFactor, 2.0);
+  EXPECT_EQ(wide.neighbourThreshold, 2.0);
   EXPECT_EQ(wide.armTrials, 20) << "a preset keeps Table 3's per-mode values";
   for (const PlannerPreset preset : {PlannerPreset::Paper, PlannerPreset::Kautham, PlannerPreset::Wide})
     EXPECT_EQ(parsePlannerPreset(plannerPresetName(preset)), preset);
   EXPECT_FALSE(parsePlannerPreset("Paper").has_value());
 }
 
-void expectRejected(const PlannerParameters& parameters, const std::string& field) {
+void expectRejected(const PlannerSettings& parameters, const std::string& field) {
   try {
     parameters.check();
     ADD_FAILURE() << "accepted bad " << field;
@@ -56,18 +56,18 @@ void expectRejected(const PlannerParameters& parameters, const std::string& fiel
   }
 }
 
-TEST(PlannerParameters, OutOfRangeValuesNameTheirOption) {
-  PlannerParameters p;
-  p.initialArmHalfSize = 0.0;
+TEST(PlannerSettings, OutOfRangeValuesNameTheirOption) {
+  PlannerSettings p;
+  p.rhoA = 0.0;
   expectRejected(p, "rho-a");
   p = {};
-  p.initialArmHalfSize = std::nan("");
+  p.rhoA = std::nan("");
   expectRejected(p, "rho-a");
   p = {};
-  p.neighbourCount = 0;
+  p.neighbours = 0;
   expectRejected(p, "neighbours");
   p = {};
-  p.neighbourThresholdFactor = 0.0;
+  p.neighbourThreshold = 0.0;
   expectRejected(p, "neighbour-threshold");
   p = {};
   p.armTrials = 0;
@@ -76,7 +76,7 @@ TEST(PlannerParameters, OutOfRangeValuesNameTheirOption) {
   p.handTrials = -1;
   expectRejected(p, "hand-trials");
   p = {};
-  p.minSweepVisits = 0;
+  p.sweepVisits = 0;
   expectRejected(p, "sweep-visits");
   p = {};
   p.maxSamples = 0;
@@ -85,10 +85,10 @@ TEST(PlannerParameters, OutOfRangeValuesNameTheirOption) {
   p.pmdBox.kappa = -1.0;
   expectRejected(p, "kappa");
   p = {};
-  p.pmdBox.maxDirections = 0;
+  p.pmdBox.maxPmds = 0;
   expectRejected(p, "max-pmds");
   p = {};
-  p.initialArmHalfSize = 1.5;
+  p.rhoA = 1.5;
   expectRejected(p, "rho-a");
   p = {};
   p.timeLimit = 0.0;

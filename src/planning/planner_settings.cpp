@@ -1,4 +1,4 @@
-#include "pmdplan/planning/planner_parameters.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 
 #include <cmath>
 #include <string>
@@ -37,44 +37,44 @@ std::string knownPlannerPresetNames() {
   return names;
 }
 
-PlannerParameters PlannerParameters::preset(PlannerPreset preset, HandSamplingMode mode) {
-  PlannerParameters parameters;
+PlannerSettings PlannerSettings::preset(PlannerPreset preset, HandSamplingMode mode) {
+  PlannerSettings parameters;
   if (mode == HandSamplingMode::FullSpace) {  // Table 3's values in parentheses
     parameters.armTrials = 20;
     parameters.handTrials = 20;
   }
   if (preset == PlannerPreset::Kautham) {
-    parameters.neighbourThresholdFactor = 4.0;
-    parameters.armBoxGrowth = ArmBoxGrowth::Linear;
+    parameters.neighbourThreshold = 4.0;
+    parameters.rhoAGrowth = ArmBoxGrowth::Linear;
   } else if (preset == PlannerPreset::Wide) {
-    parameters.neighbourThresholdFactor = 2.0;
+    parameters.neighbourThreshold = 2.0;
   }
   return parameters;
 }
 
-void PlannerParameters::check() const {
+void PlannerSettings::check() const {
   const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
-  if (!positive(initialArmHalfSize) || initialArmHalfSize > 1.0)
+  if (!positive(rhoA) || rhoA > 1.0)
     throw InputError(
         "", "rho-a",
-        "must be a number in (0, 1] (normalised arm-joint units), got " + messageNumberText(initialArmHalfSize));
-  if (neighbourCount < 1) throw InputError("", "neighbours", "must be a whole number >= 1");
-  if (!positive(neighbourThresholdFactor))
+        "must be a number in (0, 1] (normalised arm-joint units), got " + messageNumberText(rhoA));
+  if (neighbours < 1) throw InputError("", "neighbours", "must be a whole number >= 1");
+  if (!positive(neighbourThreshold))
     throw InputError("", "neighbour-threshold",
                      "must be a positive, finite factor of the start-goal distance, got " +
-                         messageNumberText(neighbourThresholdFactor));
+                         messageNumberText(neighbourThreshold));
   if (armTrials < 1)
     throw InputError("", "arm-trials", "must be a whole number >= 1, got " + std::to_string(armTrials));
   if (handTrials < 1)
     throw InputError("", "hand-trials", "must be a whole number >= 1, got " + std::to_string(handTrials));
-  if (minSweepVisits < 1) throw InputError("", "sweep-visits", "must be a whole number >= 1");
+  if (sweepVisits < 1) throw InputError("", "sweep-visits", "must be a whole number >= 1");
   if (maxSamples < 1) throw InputError("", "max-samples", "must be a whole number >= 1");
   if (!positive(pmdBox.kappa))
     throw InputError(
         "", "kappa",
         "must be a positive, finite number of standard deviations, got " + messageNumberText(pmdBox.kappa));
-  if (pmdBox.maxDirections < 1)
-    throw InputError("", "max-pmds", "must be a whole number >= 1, got " + std::to_string(pmdBox.maxDirections));
+  if (pmdBox.maxPmds < 1)
+    throw InputError("", "max-pmds", "must be a whole number >= 1, got " + std::to_string(pmdBox.maxPmds));
   if (!(timeLimit > 0.0) || (std::isfinite(timeLimit) && timeLimit > kMaxFiniteTimeLimitSeconds))
     throw InputError(
         "", "time-limit",
