@@ -55,11 +55,10 @@ double certificationSeconds(const TaskPlanningResult& result, MotionValidator& m
 }
 
 /// The benchmark name's first part for each of our planners.
-const std::vector<std::pair<std::string, RoadmapAlgorithm>> kPlanners = {{"plan", RoadmapAlgorithm::Paper},
-                                                                         {"plan-lazy", RoadmapAlgorithm::Lazy},
-                                                                         {"plan-connect", RoadmapAlgorithm::Connect}};
+const std::vector<std::pair<std::string, std::string>> kPlanners = {
+    {"plan", "pmd"}, {"plan-lazy", "pmd-lazy"}, {"plan-connect", "pmd-connect"}};
 
-std::string prefixOf(RoadmapAlgorithm algorithm) {
+std::string prefixOf(const std::string& algorithm) {
   for (const auto& [prefix, known] : kPlanners)
     if (known == algorithm) return prefix;
   return "?";
@@ -70,14 +69,14 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind, RoadmapAlgorithm algorithm,
+void planRuns(benchmark::State& state, const std::string& name, CheckerKind kind, const std::string& algorithm,
               SampleSequence sequence) {
   TaskRuns d;
   d.task = loadTaskByName(name);
   d.synergies = loadSynergyModel(dataDirectory() / "synergies" / (d.task.robot->name() + "_default.yaml"));
   d.checking = std::make_unique<CollisionChecking>(d.task, kind);
   TaskPlanningSettings options;
-  options.algorithm = algorithm;
+  options.planner = &ourPlanners().at(algorithm);
   options.synergies = &d.synergies;
   options.parameters.sequence = sequence;
   std::uint64_t seed = 1;
@@ -116,12 +115,12 @@ int main(int argc, char** argv) {
   for (const auto& name : kTasks)
     for (const CheckerKind kind : {CheckerKind::Fast, CheckerKind::Exact})
       benchmark::RegisterBenchmark(("plan/" + name + "/" + checkerKindName(kind)).c_str(), [=](benchmark::State& s) {
-        planRuns(s, name, kind, RoadmapAlgorithm::Paper, SampleSequence::Random);
+        planRuns(s, name, kind, "pmd", SampleSequence::Random);
       })->Unit(benchmark::kMillisecond);
   for (const auto& [prefix, algorithm] : kPlanners)
     for (const SampleSequence sequence : {SampleSequence::Random, SampleSequence::Halton, SampleSequence::Sdk})
       for (const auto& name : kTasks) {
-        if (algorithm == RoadmapAlgorithm::Paper && sequence == SampleSequence::Random) continue;  // above
+        if (algorithm == "pmd" && sequence == SampleSequence::Random) continue;  // above
         const std::string suffix = sequence == SampleSequence::Random ? "" : "/" + sampleSequenceName(sequence);
         benchmark::RegisterBenchmark((prefix + "/" + name + "/fast" + suffix).c_str(), [=, algorithm = algorithm](
                                                                                            benchmark::State& s) {

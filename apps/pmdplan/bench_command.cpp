@@ -57,9 +57,7 @@ BenchSettings benchOptions(const CommandLine& c) {
   o.seed = o.pmdParameters.seed;
   o.timeLimit = o.pmdParameters.timeLimit;
   o.graceSeconds = c.grace ? *c.grace : std::max(60.0, o.timeLimit);
-  const auto kind = parseCheckerKind(c.checker);
-  if (!kind) throw InputError("", "--checker", "'" + c.checker + "' is not a checker; expected exact or fast");
-  o.checker = *kind;
+  o.checker = checkerKindNamed(c.checker, "--checker");
   o.toleranceMetres = c.toleranceMm / 1000.0;
   o.synergies = c.synergies;
   o.csv = c.csv;

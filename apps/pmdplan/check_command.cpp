@@ -2,8 +2,8 @@
 // the target, and which pre-grasp will plan take), how far is each from the obstacles (clearance,
 // or penetration depth), where is the palm, is the straight joint-space segment between them free
 // at the motion tolerance, and will `plan` take the task (if not, why: the grasp rule's verdict,
-// grasp_rule.hpp and grasp_approach.hpp)? Exit 0 plan will take it, 1 plan will refuse it, 2 bad
-// input.
+// grasp_rule.hpp and grasp_approach.hpp)? The answers are taskCheckJson's (io/files/task_check_json.hpp),
+// as Python's pmdplan.check. Exit 0 plan will take it, 1 plan will refuse it, 2 bad input.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -12,15 +12,9 @@
 #include "command_registry.hpp"
 #include "grasp_options.hpp"
 #include "package_path_option.hpp"
-#include "pmdplan/collision/exact_collision_checker.hpp"
-#include "pmdplan/collision/grasp_rule.hpp"
-#include "pmdplan/collision/path_validation.hpp"
-#include "pmdplan/collision/segment_checker.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
-#include "pmdplan/core/input_error.hpp"
-#include "pmdplan/planning/grasp_approach.hpp"
+#include "pmdplan/io/files/task_check_json.hpp"
 #include "pmdplan/world/task.hpp"
-#include "robot_setup.hpp"
 
 namespace pmdplan::cli::check_command {
 namespace {
@@ -31,30 +25,6 @@ struct Options {
   double toleranceMm = 1.0;
   GraspOptions grasp;
 };
-
-nlohmann::json pairsJson(const CollisionReport& report) {
-  auto pairs = nlohmann::json::array();
-  for (const auto& [a, b] : report.pairs) pairs.push_back({a, b});
-  return pairs;
-}
-
-nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
-nlohmann::json configurationJson(ExactCollisionChecker& checker, const Configuration& q) {
-  const auto report = checker.check(q);
-  const auto& model = checker.model();
-  if (model.palmLink() < 0)
-    throw InputError(model.urdfPath().string(), "end_effector",
-                     "the robot names no palm link; write its SRDF with " + robotInitHint(model.urdfPath()));
-  const Eigen::Isometry3d palm = checker.kinematics().linkPoses(q)[static_cast<std::size_t>(model.palmLink())];
-  const auto clearance = checker.clearance(q);
-  return {{"valid", report.free()},
-          {"collisions", pairsJson(report)},
-          {"clearance_mm", clearance ? nlohmann::json(1000.0 * clearance->metres) : nlohmann::json()},
-          {"nearest", clearance ? nlohmann::json{clearance->pair.first, clearance->pair.second} : nlohmann::json()},
-          {"palm_position", vectorJson(palm.translation())},
-          {"palm_z_axis", vectorJson(palm.linear().col(2))}};
-}
 
 std::string describe(const std::string& label, const nlohmann::json& c) {
   char line[256];
@@ -92,62 +62,30 @@ std::string describe(const std::string& label, const nlohmann::json& c) {
   return text;
 }
 
-/// What plan will make of the task: the refusals (start, goal or pre-grasp), and on the goal a
-/// grasp's target and pre-grasp.
-nlohmann::json planVerdict(ExactCollisionChecker& checker, const Task& task, double tolerance,
-                           const GraspSettings& grasp, nlohmann::json& goal) {
-  auto refusals = nlohmann::json::array();
-  const auto add = [&](const PlanRefusal& refusal) {
-    refusals.push_back({{"field", refusal.field}, {"reason", refusal.reason}, {"pairs", pairsJson(refusal.pairs)}});
-  };
-  if (const auto start = GraspRule(task).startRefusal(checker)) add(*start);
-  const GoalExamination examined = examineGoal(task, checker, tolerance, grasp);
-  if (examined.contact.contact == GoalContact::GraspsTarget) goal["grasp"] = *task.target;
-  if (const auto& a = examined.approach)
-    goal["pregrasp"] = {{"derived", a->derived}, {"opening", a->opening}, {"clearance_mm", 1000.0 * a->clearance}};
-  if (examined.refusal) add(*examined.refusal);
-  return {{"accepts", refusals.empty()}, {"refusals", std::move(refusals)}};
-}
-
 int run(const Options& o) {
-  checkMotionToleranceMm(o.toleranceMm);
+  checkMotionToleranceMm(o.toleranceMm);  // bad flags before the task is read
   const GraspSettings grasp = resolveGraspSettings(o.grasp);
   const Task task = loadTaskByName(o.task);
-  ExactCollisionChecker checker(task);
-  SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
-  try {  // the straight segment's states, bounded as validate's (collision/path_validation.hpp)
-    checkValidationWork(segments, {task.start, task.goal});
-  } catch (const InputError& e) {
-    throw InputError(o.task, "start, goal", e.message());
-  }
-  const auto start = configurationJson(checker, task.start);
-  auto goal = configurationJson(checker, task.goal);
-  const nlohmann::json plan = planVerdict(checker, task, o.toleranceMm / 1000.0, grasp, goal);
+  const nlohmann::json out = taskCheckJson(task, o.toleranceMm, grasp);
+  const nlohmann::json& plan = out["plan"];
   const int exitCode = plan["accepts"].get<bool>() ? 0 : 1;
-  const auto line = segments.inspect(checker, task.start, task.goal);
-  nlohmann::json straight = {
-      {"free", line.free},
-      {"first_collision", line.firstCollision ? nlohmann::json(*line.firstCollision) : nlohmann::json()},
-      {"collisions", pairsJson(line.collisions)},
-      {"states_checked", line.statesChecked},
-      {"states_needed", line.statesNeeded},
-      {"tolerance_mm", o.toleranceMm}};
   if (o.json) {
-    nlohmann::json out = {
-        {"task", task.name}, {"start", start}, {"goal", goal}, {"straight_line", straight}, {"plan", plan}};
     std::cout << out.dump(2) << "\n";
     return exitCode;
   }
+  const nlohmann::json& line = out["straight_line"];
   std::cout << "task " << task.name << " (" << task.file.string() << ")\n"
-            << describe("start", start) << "\n"
-            << describe("goal", goal) << "\n";
-  if (line.free) {
-    std::cout << "straight segment start -> goal: free (" << line.statesChecked << " states at " << o.toleranceMm
-              << " mm)\n";
+            << describe("start", out["start"]) << "\n"
+            << describe("goal", out["goal"]) << "\n";
+  if (line["free"].get<bool>()) {
+    std::cout << "straight segment start -> goal: free (" << line["states_checked"].get<long>() << " states at "
+              << o.toleranceMm << " mm)\n";
   } else {
     std::printf("straight segment start -> goal: in collision from %.1f %% of the way (state %ld of %ld at %g mm)\n",
-                100.0 * *line.firstCollision, line.statesChecked, line.statesNeeded, o.toleranceMm);
-    for (const auto& [a, b] : line.collisions.pairs) std::cout << "         collides: " << a << " - " << b << "\n";
+                100.0 * line["first_collision"].get<double>(), line["states_checked"].get<long>(),
+                line["states_needed"].get<long>(), o.toleranceMm);
+    for (const auto& pair : line["collisions"])
+      std::cout << "         collides: " << pair[0].get<std::string>() << " - " << pair[1].get<std::string>() << "\n";
   }
   for (const auto& refusal : plan["refusals"])
     std::cout << "plan will refuse the task's " << refusal["field"].get<std::string>() << ": "

@@ -13,6 +13,7 @@
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/glove_calibration_file.hpp"
 #include "pmdplan/glove/glove_csv.hpp"
+#include "pmdplan/glove/glove_recording_file.hpp"
 #include "pmdplan/glove/glove_serial_stream.hpp"
 #include "pmdplan/model/robot_model.hpp"
 #include "pmdplan/synergy/hand_mapping_file.hpp"
@@ -20,10 +21,6 @@
 
 namespace pmdplan::cli::glove_command {
 namespace {
-
-std::filesystem::path calibrationBeside(const std::filesystem::path& recording) {
-  return std::filesystem::path(recording).replace_extension(".calibration.yaml");
-}
 
 struct SynthOptions {
   int frames = 13500;
@@ -43,7 +40,7 @@ int runSynth(const SynthOptions& o) {
   if (output.extension() != ".csv")
     throw InputError("", "-o", "the synthetic recording is written as CSV: give a .csv file name");
   const std::filesystem::path calibrationPath =
-      o.calibrationOutput.empty() ? calibrationBeside(output) : std::filesystem::path(o.calibrationOutput);
+      o.calibrationOutput.empty() ? calibrationBesideRecording(output) : std::filesystem::path(o.calibrationOutput);
   checkOutputPath(output, "-o", {o.mapping});  // a bad output fails before the inputs are read
   checkOutputPath(calibrationPath, "--calibration-out", {o.mapping});
   const HandMapping mapping =
@@ -65,19 +62,6 @@ int runSynth(const SynthOptions& o) {
   return 0;
 }
 
-enum class GloveFormat { Csv, Serial };
-
-GloveFormat formatOf(const std::string& path, const std::string& given, const std::string& option) {
-  if (given == "csv") return GloveFormat::Csv;
-  if (given == "serial") return GloveFormat::Serial;
-  if (!given.empty() && given != "auto") throw InputError("", option, "expected csv, serial or auto");
-  const auto extension = std::filesystem::path(path).extension();
-  if (extension == ".csv" || extension == ".txt") return GloveFormat::Csv;
-  if (extension == ".bin" || extension == ".raw" || extension == ".serial") return GloveFormat::Serial;
-  throw InputError(path, option,
-                   "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give " + option);
-}
-
 struct ConvertOptions {
   std::string input;
   std::string output;
@@ -87,9 +71,8 @@ struct ConvertOptions {
 
 int runConvert(const ConvertOptions& o) {
   checkOutputPath(o.output, "-o", {o.input});
-  const GloveRecording recording =
-      formatOf(o.input, o.from, "--from") == GloveFormat::Csv ? readGloveCsv(o.input) : readGloveSerialStream(o.input);
-  if (formatOf(o.output, o.to, "--to") == GloveFormat::Csv) {
+  const GloveRecording recording = readGloveRecording(o.input, o.from, "--from");
+  if (gloveRecordingFormat(o.output, o.to, "--to") == GloveRecordingFormat::Csv) {
     writeFileAtomically(o.output, formatGloveCsv(recording));
   } else {
     for (std::size_t f = 0; f < recording.frames.size(); ++f)

@@ -1,5 +1,6 @@
-// `pmdplan plan [TASK]`: the paper's PMD roadmap planner (its full-space baseline, or our lazy PMD
-// roadmap) on a task, writing the path file. Exit 0 solved, 1 not solved within the limits, 2 bad input.
+// `pmdplan plan [TASK]`: any planner of the roster (the paper's PMD roadmap planner by default, its
+// full-space baseline, ours, OMPL's) on a task, writing the path file. Exit 0 solved, 1 not solved
+// within the limits, 2 bad input.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -23,20 +24,24 @@
 #include "pmdplan/io/viewer/robot_mimic.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 #include "pmdplan/planning/task_planning.hpp"
-#include "pmdplan/synergy/hand_fit.hpp"
-#include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/synergy/synergy_model_resolution.hpp"
 #include "pmdplan/world/task.hpp"
 #include "trajectory_output.hpp"
 
 namespace pmdplan::cli::plan_command {
 namespace {
 
-/// "pmd, full, pmd-lazy, pmd-connect": the roster's planners of ours, which `plan` runs.
-std::string ourPlannerNames() {
-  std::string names;
-  for (const PlannerEntry& entry : plannerRoster())
-    if (entry.family == PlannerFamily::PmdRoadmap) names += (names.empty() ? "" : ", ") + entry.name;
-  return names;
+/// The --planner help: our planners with what they are, then OMPL's names.
+std::string plannerHelp() {
+  std::string ours;
+  std::string ompl;
+  for (const PlannerEntry& entry : plannerRoster().entries()) {
+    if (entry.family == PlannerFamily::Ompl)
+      ompl += (ompl.empty() ? "" : ", ") + entry.name;
+    else
+      ours += (ours.empty() ? "" : ", ") + entry.name + " (" + entry.description + ")";
+  }
+  return ours + ", or one of OMPL's: " + ompl + " (docs/planners.md)";
 }
 
 struct Options {
@@ -54,30 +59,21 @@ struct Options {
 };
 
 int run(const Options& o) {
-  const auto planner = findPlanner(o.planner);
-  if (!planner || planner->family != PlannerFamily::PmdRoadmap)
-    throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected " + ourPlannerNames());
-  const std::optional<HandSamplingMode> mode = planner->mode;
+  const PlannerEntry* planner = findPlanner(o.planner);
+  if (!planner)
+    throw InputError("", "--planner", "'" + o.planner + "' is not a planner; expected " + knownPlannerNames());
   checkMotionToleranceMm(o.toleranceMm);
   const Task task = loadTaskByName(o.task);
-  const auto checkerKind = parseCheckerKind(o.checker);
-  if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
-  const PlanningSpace space =
-      planningSpaceFromRobot(*task.robot);  // a robot without groups is told how to get them before anything else
-  CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
+  const CheckerKind checkerKind = checkerKindNamed(o.checker, "--checker");
+  // A robot without groups is told how to get them before anything else.
+  static_cast<void>(planningSpaceFromRobot(*task.robot));
+  CollisionChecking checking(task, checkerKind, o.toleranceMm / 1000.0);
   // The goal may grasp the target (planTask checks it and refuses other contact).
   if (const auto refused = GraspRule(task).startRefusal(checking.exact())) refused->raise(task);
 
-  const std::filesystem::path synergyFile = o.synergies.empty() && *mode == HandSamplingMode::Synergy
-                                                ? shippedSynergyModelPath(task.robot->name())
-                                                : std::filesystem::path(o.synergies);
-  std::optional<SynergyModel> synergies;
-  if (*mode == HandSamplingMode::Synergy) {
-    synergies = loadSynergyModel(synergyFile);
-    std::vector<std::string> handJoints;
-    for (const int i : space.handIndices) handJoints.push_back(space.joints[static_cast<std::size_t>(i)].name);
-    checkSynergyModelFitsHand(*synergies, handJoints, synergyFile.string());
-  }
+  const ResolvedSynergyModel synergies =
+      planner->usesSynergies ? resolveSynergyModelForHand(*task.robot, o.synergies, SynergyModelNeed::Required)
+                             : ResolvedSynergyModel{};
   // Every output is checked once the inputs are read (the task's files, the synergy model, the
   // joint limits), before the planning; the default name comes from the task file's name, never
   // from its contents.
@@ -91,10 +87,9 @@ int run(const Options& o) {
                                                                        : std::filesystem::path(*o.trajectory);
   if (o.trajectory) checkTrajectoryOutputs(task, {}, trajectoryFile, "--trajectory");
   TaskPlanningSettings options;
-  options.algorithm = planner->algorithm;
-  options.mode = *mode;
-  options.parameters = resolvePlannerSettings(o.settings, *mode);
-  options.synergies = synergies ? &*synergies : nullptr;
+  options.planner = planner;
+  options.parameters = resolvePlannerSettings(o.settings, planner->mode);
+  options.synergies = synergies.get();
   const PlannerSettings& parameters = options.parameters;
   options.grasp = resolveGraspSettings(o.grasp);
   ProgressLine progress("planning " + task.name);
@@ -131,9 +126,12 @@ int run(const Options& o) {
     std::printf("%s: solved with the %s planner (seed %llu) in %.3f s + %.3f s smoothing\n", task.name.c_str(),
                 o.planner.c_str(), static_cast<unsigned long long>(parameters.seed), stats.planningTime,
                 stats.smoothingTime);
-    std::printf(
-        "  %zu samples (hand-arm draws) from %zu arm trials, %zu roadmap nodes, max trials %zu, final rho_a %.4f\n",
-        stats.samples, stats.armTrials, stats.roadmapNodes, stats.maxTrials, stats.finalArmHalfSize);
+    if (planner->family == PlannerFamily::Ompl)
+      std::printf("  %zu states checked, %zu graph states\n", stats.samples, stats.roadmapNodes);
+    else
+      std::printf(
+          "  %zu samples (hand-arm draws) from %zu arm trials, %zu roadmap nodes, max trials %zu, final rho_a %.4f\n",
+          stats.samples, stats.armTrials, stats.roadmapNodes, stats.maxTrials, stats.finalArmHalfSize);
     std::printf("  %zu path nodes, length %.3f (normalised)\n", stats.pathNodes, stats.pathLength);
     if (result.grasp)
       std::printf("  grasp of %s: approach to a pre-grasp (%s, %.1f mm from it), then closing (points %zu-%zu)\n",
@@ -148,13 +146,11 @@ int run(const Options& o) {
 }
 
 const CommandRegistrar registrar{
-    "plan", "Plan a path for a task with the PMD roadmap planner", [](CLI::App& app) {
+    "plan", "Plan a path for a task with a planner (default: the paper's PMD roadmap planner)", [](CLI::App& app) {
       auto o = std::make_shared<Options>();
       addPackagePathOption(app);
       app.add_option("task", o->task, "Built-in task name or task file (default can_on_table)");
-      app.add_option("--planner", o->planner,
-                     "pmd (the paper's planner), full (hands sampled over the whole joint box), pmd-lazy (our "
-                     "lazy PMD roadmap) or pmd-connect (our bidirectional PMD trees; docs/planners.md)");
+      app.add_option("--planner", o->planner, plannerHelp());
       app.add_option(
           "--checker", o->checker,
           "fast (default: convex parts and lane kernels, FCL only near contact; the same answers) or exact (FCL only)");

@@ -29,7 +29,7 @@ void addPlannerSettingOptions(CLI::App& app, PlannerSettingOptions& settings, co
     help[0] = s.symbol.empty() ? static_cast<char>(std::toupper(static_cast<unsigned char>(help[0]))) : help[0];
     if (!s.symbol.empty()) help = s.symbol + ": " + help;
     settings.options[i] =
-        app.add_option("--" + s.flag, settings.values[i], help + defaultText(s))->type_name(s.valueName);
+        app.add_option("--" + s.flag, settings.values[i], help + defaultText(s))->type_name(s.valueName());
   }
 }
 
@@ -40,12 +40,12 @@ PlannerSettings resolvePlannerSettings(const PlannerSettingOptions& settings, Ha
                      "'" + settings.preset + "' is not a preset; expected one of " + knownPlannerPresetNames());
   PlannerSettings parameters = PlannerSettings::preset(*preset, mode);
   const auto& table = plannerSettingTable();
-  for (std::size_t i = 0; i < table.size(); ++i)
-    if (settings.options.at(i)->count() > 0) table[i].set(parameters, settings.values.at(i));
   try {
+    for (std::size_t i = 0; i < table.size(); ++i)
+      if (settings.options.at(i)->count() > 0) table[i].set(parameters, settings.values.at(i));
     parameters.check();
   } catch (const InputError& e) {
-    throw InputError("", "--" + e.field(), e.message());
+    throw InputError("", "--" + e.field(), e.message());  // the setting's key as the flag it is here
   }
   return parameters;
 }

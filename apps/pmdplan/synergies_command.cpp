@@ -14,9 +14,9 @@
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/glove/glove_calibration_file.hpp"
-#include "pmdplan/glove/glove_csv.hpp"
-#include "pmdplan/glove/glove_serial_stream.hpp"
+#include "pmdplan/glove/glove_recording_file.hpp"
 #include "pmdplan/io/figures/synergy_plots.hpp"
+#include "pmdplan/io/files/synergy_model_json.hpp"
 #include "pmdplan/model/robot_model.hpp"
 #include "pmdplan/synergy/figure7_joint_pairs.hpp"
 #include "pmdplan/synergy/graspit_eigengrasp_import.hpp"
@@ -47,24 +47,6 @@ struct Options {
 
 std::string fileName(const std::filesystem::path& path) { return path.filename().string(); }
 
-GloveRecording readRecording(const Options& o) {
-  const auto extension = std::filesystem::path(o.recording).extension();
-  std::string format = o.format;
-  if (format == "auto") {
-    if (extension == ".csv" || extension == ".txt")
-      format = "csv";
-    else if (extension == ".bin" || extension == ".raw" || extension == ".serial")
-      format = "serial";
-    else
-      throw InputError(
-          o.recording, "--format",
-          "cannot tell the format from the file name: use .csv or .bin/.raw/.serial, or give --format csv|serial");
-  }
-  if (format == "csv") return readGloveCsv(o.recording);
-  if (format == "serial") return readGloveSerialStream(o.recording);
-  throw InputError("", "--format", "expected csv, serial or auto");
-}
-
 std::vector<std::string> ownAxisJoints(const Options& o, const JointLimits& hand) {
   if (o.ownAxis.size() == 1 && o.ownAxis.front() == "none") return {};
   if (!o.ownAxis.empty()) return o.ownAxis;
@@ -72,27 +54,6 @@ std::vector<std::string> ownAxisJoints(const Options& o, const JointLimits& hand
   for (const auto& joint : hand)
     if (joint.name == "thumb_base") return {"thumb_base"};
   return {};
-}
-
-nlohmann::json vectorJson(const Eigen::VectorXd& values) {
-  auto list = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < values.size(); ++i) list.push_back(values(i));
-  return list;
-}
-
-nlohmann::json modelJson(const SynergyModel& model) {
-  nlohmann::json joints = nlohmann::json::array();
-  for (const auto& joint : model.joints) joints.push_back(joint.name);
-  nlohmann::json directions = nlohmann::json::array();
-  for (int k = 0; k < model.directionCount(); ++k) directions.push_back(vectorJson(model.directions.col(k)));
-  return {{"model_joint_names", joints},
-          {"own_axis_joints", model.ownAxisJoints},
-          {"orthonormal", model.orthonormal},
-          {"mean", vectorJson(model.mean)},
-          {"directions", directions},
-          {"sigma", vectorJson(model.sigma)},
-          {"variance_fraction", vectorJson(model.varianceFraction)},
-          {"provenance", model.provenance}};
 }
 
 void printModel(const SynergyModel& model) {
@@ -124,7 +85,7 @@ int runShow(const Options& o) {
   const SynergyModel model = loadSynergyModel(o.show);
   writePlots(o, model, {}, model.joints);
   if (o.json) {
-    std::cout << modelJson(model).dump(2) << "\n";
+    std::cout << synergyModelJson(model).dump(2) << "\n";
     return 0;
   }
   std::cout << o.show << ": ";
@@ -141,7 +102,7 @@ int runGraspIt(const Options& o) {
   if (!o.output.empty()) saveSynergyModel(o.output, imported.model);
   writePlots(o, imported.model, {}, imported.model.joints);
   if (o.json) {
-    nlohmann::json out = modelJson(imported.model);
+    nlohmann::json out = synergyModelJson(imported.model);
     out["notes"] = imported.notes;
     if (!o.output.empty()) out["model_file"] = o.output;
     std::cout << out.dump(2) << "\n";
@@ -171,8 +132,8 @@ int runPostures(const Options& o) {
     nlohmann::json out = {{"frames", fit.frames},
                           {"pca_joint_names", fit.pcaJoints},
                           {"constant_joints", fit.constantJoints},
-                          {"cumulative_variance", vectorJson(fit.cumulativeVariance)},
-                          {"model", modelJson(fit.model)}};
+                          {"cumulative_variance", numberListJson(fit.cumulativeVariance)},
+                          {"model", synergyModelJson(fit.model)}};
     if (!o.output.empty()) out["model_file"] = o.output;
     std::cout << out.dump(2) << "\n";
     return 0;
@@ -191,15 +152,8 @@ void checkOutputs(const Options& o);
 
 int runRecording(const Options& o) {
   const JointLimits hand = RobotModel::loadByNameOrPath(o.robot).groupJoints("hand");
-  const GloveRecording recording = readRecording(o);
-  std::filesystem::path calibrationPath = o.calibration;
-  if (calibrationPath.empty()) {
-    calibrationPath = std::filesystem::path(o.recording).replace_extension(".calibration.yaml");
-    if (!std::filesystem::exists(calibrationPath))
-      throw InputError(o.recording, "--calibration",
-                       "no calibration given and " + fileName(calibrationPath) +
-                           " is not beside the recording; pass --calibration FILE");
-  }
+  const GloveRecording recording = readGloveRecording(o.recording, o.format);
+  const std::filesystem::path calibrationPath = recordingCalibrationPath(o.recording, o.calibration);
   const GloveCalibration calibration = loadGloveCalibration(calibrationPath);
   const std::filesystem::path mappingPath =
       o.mapping.empty() ? defaultHandMappingPath() : std::filesystem::path(o.mapping);
@@ -242,7 +196,7 @@ int runRecording(const Options& o) {
   if (o.json) {
     nlohmann::json correlation = nlohmann::json::array();
     for (Eigen::Index i = 0; i < fit.correlation.rows(); ++i)
-      correlation.push_back(vectorJson(fit.correlation.row(i).transpose()));
+      correlation.push_back(numberListJson(fit.correlation.row(i).transpose()));
     nlohmann::json clampedPerJoint = nlohmann::json::object();
     for (std::size_t j = 0; j < hand.size(); ++j) clampedPerJoint[hand[j].name] = analysis.clampedPerJoint[j];
     nlohmann::json out = {{"frames", fit.frames},
@@ -252,10 +206,10 @@ int runRecording(const Options& o) {
                           {"joint_names", fit.varyingJoints},
                           {"pca_joint_names", fit.pcaJoints},
                           {"constant_joints", fit.constantJoints},
-                          {"cumulative_variance", vectorJson(fit.cumulativeVariance)},
+                          {"cumulative_variance", numberListJson(fit.cumulativeVariance)},
                           {"correlation", correlation},
                           {"figure7_pairs", pairs}};
-    out["model"] = modelJson(fit.model);
+    out["model"] = synergyModelJson(fit.model);
     if (!o.output.empty()) out["model_file"] = o.output;
     std::cout << out.dump(2) << "\n";
     return 0;

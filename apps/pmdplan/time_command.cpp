@@ -39,10 +39,9 @@ int run(const Options& o) {
   checked.points = pathConfigurations(path, *task.robot, o.path);
   checked.jointNames = task.robot->activeJointNames();
   checked.mimic = mimicRelations(*task.robot);
-  const auto checkerKind = parseCheckerKind(o.checker);
-  if (!checkerKind) throw InputError("", "--checker", "'" + o.checker + "' is not a checker; expected exact or fast");
+  const CheckerKind checkerKind = checkerKindNamed(o.checker, "--checker");
   if (!(o.toleranceMm > 0.0)) throw InputError("", "--tolerance-mm", "expected a positive number of millimetres");
-  CollisionChecking checking(task, *checkerKind, o.toleranceMm / 1000.0);
+  CollisionChecking checking(task, checkerKind, o.toleranceMm / 1000.0);
   const std::filesystem::path output =
       o.output.empty() ? defaultTrajectoryFile(o.path) : std::filesystem::path(o.output);
   checkTrajectoryOutputs(task, o.trajectory, output, "-o");  // against every input read so far

@@ -1,15 +1,13 @@
 // `pmdplan validate TASK PATH.json`: an independent check of a path with the exact checker; a
-// grasp path's closing phase with the grasp rule (hand-target contact allowed, nothing else).
+// grasp path's closing phase with the grasp rule (hand-target contact allowed, nothing else). The
+// check is validatePathFile (io/files/path_file_validation.hpp), as Python's pmdplan.validate.
 #include <iostream>
 
 #include "command_registry.hpp"
 #include "package_path_option.hpp"
-#include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
-#include "pmdplan/core/input_error.hpp"
 #include "pmdplan/io/files/json_text.hpp"
-#include "pmdplan/io/files/path_file.hpp"
-#include "pmdplan/io/files/path_validation_json.hpp"
+#include "pmdplan/io/files/path_file_validation.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan::cli::validate_command {
@@ -23,30 +21,18 @@ struct Options {
 };
 
 int run(const Options& o) {
-  checkMotionToleranceMm(o.toleranceMm);
+  checkMotionToleranceMm(o.toleranceMm);  // a bad tolerance before the task is read
   const Task task = loadTaskByName(o.task);
-  const PathFile file = readPathFile(o.path);
-  if (file.jointNames != task.robot->activeJointNames())
-    throw InputError(o.path, "joint_names",
-                     "the path's joints do not match the active joints of robot '" + task.robot->name() + "'");
-  ExactCollisionChecker checker(task);
-  SegmentChecker segments(checker, *task.robot, o.toleranceMm / 1000.0);
-  const PathPhases phases{file.closingFrom};
-  PathValidation result;
-  try {
-    result = GraspRule(task).validatePath(checker, segments, file.points, phases);
-  } catch (const InputError& e) {
-    if (!e.file().empty()) throw;
-    throw InputError(o.path, e.field(), e.message());  // the work bound (checkValidationWork) names the file
-  }
+  const PathJudgement judgement = validatePathFile(task, o.path, o.toleranceMm);
+  const PathValidation& result = judgement.validation;
+  const auto& closingFrom = judgement.phases.closingFrom;
   if (o.json) {
-    std::cout << formatJson(pathValidationJson(result, phases, o.toleranceMm));
+    std::cout << formatJson(pathJudgementJson(judgement));
   } else {
-    std::cout << o.path << ": " << (result.valid ? "valid" : "INVALID") << " (" << file.points.size() << " points, "
+    std::cout << o.path << ": " << (result.valid ? "valid" : "INVALID") << " (" << judgement.pointCount << " points, "
               << result.statesChecked << " states checked at " << o.toleranceMm << " mm"
-              << (file.closingFrom
-                      ? "; approach to point " + std::to_string(*file.closingFrom) + ", then closing on the target"
-                      : "")
+              << (closingFrom ? "; approach to point " + std::to_string(*closingFrom) + ", then closing on the target"
+                              : "")
               << ")\n";
     for (const auto& p : result.problems) std::cout << "  " << p << "\n";
   }

@@ -17,9 +17,9 @@
 #include "pmdplan/io/viewer/path_set.hpp"
 #include "pmdplan/io/viewer/viewer_data.hpp"
 #include "pmdplan/io/viewer/viewer_folder.hpp"
-#include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/io/viewer/viewer_folder_outputs.hpp"
+#include "pmdplan/synergy/synergy_model_resolution.hpp"
 #include "pmdplan/world/task.hpp"
-#include "viewer_folder_outputs.hpp"
 
 namespace pmdplan::cli::view_command {
 namespace {
@@ -80,16 +80,12 @@ int run(const Options& o) {
                          "the path was planned for task '" + input.path.task + "', not --task " + task.name + ": " +
                              warnings.front() + "; view it with its own task");
     }
-  std::filesystem::path synergyFile = o.synergies;
-  if (synergyFile.empty() && std::filesystem::exists(defaultSynergyModelPath(task.robot->name())))
-    synergyFile = defaultSynergyModelPath(task.robot->name());
-  const std::optional<SynergyModel> synergies =
-      synergyFile.empty() ? std::nullopt : std::optional<SynergyModel>(loadSynergyModel(synergyFile));
+  const ResolvedSynergyModel synergies =
+      resolveSynergyModel(task.robot->name(), o.synergies, SynergyModelNeed::Optional);
 
   ViewerDataSettings parameters;
   parameters.trajectory = trajectory ? &*trajectory : nullptr;
-  ViewerData data =
-      viewerData(task, path, synergies ? &*synergies : nullptr, {inputs.front().file, synergyFile}, parameters);
+  ViewerData data = viewerData(task, path, synergies.get(), {inputs.front().file, synergies.file}, parameters);
   addOverlayPaths(data, task, inputs, parameters);
   const std::filesystem::path out = o.out.empty() ? defaultOutput(o) : std::filesystem::path(o.out);
   checkViewerFolderOutputs(out, data, viewerAssetDirectory(), "--out");  // no file of it may be an input
@@ -98,7 +94,7 @@ int run(const Options& o) {
   if (inputs.size() > 1) std::cout << inputs.size() << " paths; the first: ";
   std::cout << data.document["path"]["states"].size() << " states from "
             << data.document["path"]["waypoint_count"].get<std::size_t>() << " waypoints"
-            << (synergies ? "" : "; no synergy model for robot " + task.robot->name()) << "): open "
+            << (synergies.model ? "" : "; no synergy model for robot " + task.robot->name()) << "): open "
             << (out / "index.html").string() << " in a browser\n";
   if (!o.servePort) return 0;
   StaticFileServer server(out, *o.servePort);

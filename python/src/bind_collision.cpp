@@ -1,5 +1,6 @@
 // pmdplan.CollisionChecker: the state and segment checks of one task, with the fast checker's
-// batches for arrays of configurations. The GIL is released while checking.
+// batches for arrays of configurations; pmdplan.check: `pmdplan check` of a task
+// (io/files/task_check_json.hpp). The GIL is released while checking.
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -11,18 +12,19 @@
 #include "pmdplan/collision/fast/fast_collision_checker.hpp"
 #include "pmdplan/collision/swept_distance_bound.hpp"
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/io/files/task_check_json.hpp"
 
 namespace pmdplan::python {
 namespace {
 
-CheckerKind checkerKindFrom(const std::string& name) {
-  const auto kind = parseCheckerKind(name);
-  if (!kind) throw InputError("", "--checker", "'" + name + "' is not a checker; expected exact or fast");
-  return *kind;
-}
+CheckerKind checkerKindFrom(const std::string& name) { return checkerKindNamed(name, "checker"); }
 
 double toleranceMetres(double toleranceMm) {
-  checkMotionToleranceMm(toleranceMm);  // the CLI's rule and message
+  try {
+    checkMotionToleranceMm(toleranceMm);  // the CLI's rule and message
+  } catch (const InputError& e) {
+    throw InputError(e.file(), "tolerance_mm", e.message());  // the argument's Python name
+  }
   return toleranceMm / 1000.0;
 }
 
@@ -152,6 +154,19 @@ void bindCollision(py::module_& m) {
       .def("__repr__", [](const PyCollisionChecker& c) {
         return "<pmdplan.CollisionChecker " + checkerKindName(c.checking->kind()) + " for " + c.task->name + ">";
       });
+  m.def(
+      "check",
+      [](const PyTask& task, double toleranceMm) {
+        nlohmann::json document;
+        {
+          py::gil_scoped_release release;
+          document = taskCheckJson(*task.task, toleranceMm);
+        }
+        return pythonFromJson(document);
+      },
+      py::arg("task"), py::arg("tolerance_mm") = 1.0,
+      "`pmdplan check --json` of a task: its start and goal (validity, pairs, clearance, palm pose), the\n"
+      "straight segment between them, and whether plan takes the task ({'accepts', 'refusals'}).");
 }
 
 }  // namespace pmdplan::python

@@ -1,4 +1,4 @@
-// pmdplan.plan (the PMD roadmap planner, its full-space baseline or an OMPL planner on a task).
+// pmdplan.plan: any planner of the roster on a task, through the library's planTask.
 // Planning releases the GIL; errors are the CLI's (InputError, the same messages).
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -12,7 +12,6 @@
 #include "conversions.hpp"
 #include "planner_settings.hpp"
 #include "pmdplan/bench/human_likeness.hpp"
-#include "pmdplan/bench/ompl_planning.hpp"
 #include "pmdplan/bench/planner_roster.hpp"
 #include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/core/command_files.hpp"
@@ -21,7 +20,6 @@
 #include "pmdplan/io/files/path_validation_json.hpp"
 #include "pmdplan/io/files/statistics_json.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
-#include "pmdplan/planning/robot_planning_space.hpp"
 #include "pmdplan/planning/task_planning.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
 #include "pmdplan/synergy/synergy_readout.hpp"
@@ -40,7 +38,7 @@ struct PyPlanResult {
   std::optional<std::size_t> closingFrom;  ///< a grasp path's closing phase (docs/grasp_goals.md)
   PlanningStatistics statistics;
   std::vector<MimicRelation> mimic;
-  double callSeconds = 0.0;  ///< wall time of the library call alone (planTask or planWithOmpl)
+  double callSeconds = 0.0;  ///< wall time of the library call alone (planTask)
 };
 
 py::object jsonToPython(const nlohmann::ordered_json& document) {
@@ -66,7 +64,7 @@ std::shared_ptr<PyCollisionChecker> checkerFor(const PyTask& task, py::handle ch
     return given;
   }
   if (!py::isinstance<py::str>(checker))
-    throw InputError("", "--checker", "expected 'fast', 'exact' or a pmdplan.CollisionChecker");
+    throw InputError("", "checker", "expected 'fast', 'exact' or a pmdplan.CollisionChecker");
   auto made = std::make_shared<PyCollisionChecker>();
   made->task = task.task;
   made->world = task.world;
@@ -75,100 +73,44 @@ std::shared_ptr<PyCollisionChecker> checkerFor(const PyTask& task, py::handle ch
   return made;
 }
 
-/// The synergy model argument: a SynergyModel, a model file, or None for the robot's shipped one.
-PySynergyModel synergiesFor(const Task& task, py::handle synergies) {
-  if (py::isinstance<PySynergyModel>(synergies)) return synergies.cast<PySynergyModel>();
-  const std::filesystem::path file = synergies.is_none()
-                                         ? defaultSynergyModelPath(task.robot->name())
-                                         : std::filesystem::path(py::str(synergies).cast<std::string>());
-  return PySynergyModel{std::make_shared<const SynergyModel>(loadSynergyModel(file)), file.string()};
-}
-
-PyPlanResult planPmd(const PyTask& task, PyCollisionChecker& checker, const PlannerEntry& entry, py::handle settings,
-                     py::handle synergies, std::optional<std::uint64_t> seed, std::optional<double> timeLimit) {
+PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle settings, py::handle checker,
+                  py::handle synergies, std::optional<std::uint64_t> seed, std::optional<double> timeLimit,
+                  double toleranceMm) {
+  const PlannerEntry* entry = findPlanner(planner);
+  if (!entry)
+    throw InputError("", "planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
+  auto checking = checkerFor(task, checker, toleranceMm);
+  PythonInterrupt interrupt;  // Ctrl-C ends the run as its time limit would, then raises KeyboardInterrupt
   std::optional<PySynergyModel> model;
-  if (entry.mode == HandSamplingMode::Synergy) model = synergiesFor(*task.task, synergies);
+  if (entry->usesSynergies) model = synergyModelArgument(*task.task, synergies);
   TaskPlanningSettings options;
-  options.algorithm = entry.algorithm;
-  options.mode = entry.mode;
-  options.parameters = plannerParametersFrom(settings, entry.mode, seed, timeLimit);
+  options.planner = entry;
+  options.parameters = plannerParametersFrom(settings, entry->mode, seed, timeLimit);
   options.synergies = model ? model->model.get() : nullptr;
   checkPlannerParameters(options.parameters);
   PyPlanResult result;
   TaskPlanningResult planned;
   try {
     py::gil_scoped_release release;
-    std::lock_guard lock(checker.mutex);
+    std::lock_guard lock(checking->mutex);
     const auto began = std::chrono::steady_clock::now();
-    planned = planTask(*task.task, *checker.checking, options);
+    planned = planTask(*task.task, *checking->checking, options);
     result.callSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   } catch (const InputError& e) {
     if (!e.file().empty() || !model) throw;
     throw InputError(model->source, e.field(), e.message());  // the sampler names the model's field
   }
-  result.seed = seedOf(options.parameters);
-  result.path = std::move(planned.path);
-  result.closingFrom = planned.closingFrom;
-  result.statistics = planned.statistics;
-  return result;
-}
-
-PyPlanResult planOmpl(const PyTask& task, PyCollisionChecker& checker, const PlannerEntry& entry,
-                      std::optional<std::uint64_t> seed, std::optional<double> timeLimit) {
-  const std::uint64_t runSeed = seed.value_or(1);
-  const double limit = timeLimit.value_or(defaultTimeLimit());
-  if (runSeed == 0) throw InputError("", "--seed", "OMPL ignores seed 0; expected a positive seed");
-  if (!(limit > 0.0)) throw InputError("", "--time-limit", "expected a positive number of seconds");
-  const PlanningSpace space = planningSpaceFromRobot(*task.task->robot);
-  PyPlanResult result;
-  OmplPlanningResult planned;
-  TaskApproach approach;
-  {
-    py::gil_scoped_release release;
-    std::lock_guard lock(checker.mutex);
-    const auto began = std::chrono::steady_clock::now();
-    // A grasp goal as planTask plans it: the approach to the pre-grasp, then the closing segment.
-    approach = taskApproach(*task.task, *checker.checking, GraspSettings{});
-    planned = planWithOmpl(entry.omplName, space, checker.checking->states(), checker.checking->motions(),
-                           task.task->start, approach.end(*task.task), limit, runSeed);
-    result.callSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  }
-  if (planned.solved) result.closingFrom = appendClosing(*task.task, approach, planned.path);
-  auto& s = result.statistics;
-  s.status = planned.solved ? PlannerStatus::Solved : PlannerStatus::TimeLimit;
-  s.planningTime = planned.planningTimeSeconds + approach.seconds;
-  s.stateChecks = planned.stateChecks;
-  s.motionChecks = planned.motionChecks;
-  s.roadmapNodes = planned.graphStates;
-  s.pathNodes = s.pathNodesBeforeSmoothing = planned.path.size();
-  for (std::size_t i = 1; i < planned.path.size(); ++i)
-    s.pathLength += space.distance(planned.path[i - 1], planned.path[i]);
-  s.pathLengthBeforeSmoothing = s.pathLength;
-  result.seed = runSeed;
-  result.path = std::move(planned.path);
-  return result;
-}
-
-PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle settings, py::handle checker,
-                  py::handle synergies, std::optional<std::uint64_t> seed, std::optional<double> timeLimit,
-                  double toleranceMm) {
-  const auto entry = findPlanner(planner);
-  if (!entry)
-    throw InputError("", "--planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
-  auto checking = checkerFor(task, checker, toleranceMm);
-  PythonInterrupt interrupt;  // Ctrl-C ends the run as its time limit would, then raises KeyboardInterrupt
-  // The CLI's message for a start or goal plan refuses: checked first for OMPL's planners (they do
-  // not check them), after the run for ours (they stop at once with that status; no cost otherwise).
-  if (entry->family == PlannerFamily::Ompl) requirePlannableEnds(*task.task, *checking);
-  PyPlanResult result = entry->family == PlannerFamily::Ompl
-                            ? planOmpl(task, *checking, *entry, seed, timeLimit)
-                            : planPmd(task, *checking, *entry, settings, synergies, seed, timeLimit);
   interrupt.raiseIfInterrupted();
-  if (result.statistics.status == PlannerStatus::InvalidStart || result.statistics.status == PlannerStatus::InvalidGoal)
+  // The CLI's message for a start or goal plan refuses (every planner stops at once with that status).
+  if (planned.status == PlannerStatus::InvalidStart || planned.status == PlannerStatus::InvalidGoal)
     requirePlannableEnds(*task.task, *checking);
   result.task = task.task->name;
   result.planner = entry->name;
+  result.seed = seedOf(options.parameters);
   result.jointNames = task.task->robot->activeJointNames();
+  result.path = std::move(planned.path);
+  result.closingFrom = planned.closingFrom;
+  result.statistics = planned.statistics;
   result.mimic = mimicRelations(*task.task->robot);
   return result;
 }
@@ -217,15 +159,16 @@ void bindPlanning(py::module_& m) {
       "planners",
       [] {
         std::vector<std::string> names;
-        for (const auto& entry : plannerRoster()) names.push_back(entry.name);
+        for (const PlannerEntry& entry : plannerRoster().entries()) names.push_back(entry.name);
         return names;
       },
       "Every planner name plan() takes: pmd, full, ompl:RRTConnect, ...");
   m.def("plan", &plan, py::arg("task"), py::arg("planner") = "pmd", py::kw_only(), py::arg("settings") = py::none(),
         py::arg("checker") = "fast", py::arg("synergies") = py::none(), py::arg("seed") = py::none(),
         py::arg("time_limit") = py::none(), py::arg("tolerance_mm") = 1.0,
-        "Plans task with planner 'pmd' (the paper's), 'full' (its full-space baseline) or 'ompl:<Name>'.\n"
-        "settings: PlannerSettings (pmd/full); seed and time_limit override it. checker: 'fast', 'exact' or a\n"
+        "Plans task with planner 'pmd' (the paper's), 'full' (its full-space baseline), 'pmd-lazy', 'pmd-connect'\n"
+        "or 'ompl:<Name>[@pmd]' (planners()). settings: PlannerSettings (OMPL's planners honour its seed, time\n"
+        "limit, smoothing and PMD sampling); seed and time_limit override it. checker: 'fast', 'exact' or a\n"
         "CollisionChecker of this task (reused; its tolerance applies). synergies: SynergyModel, a model file or\n"
         "None (the robot's shipped model). The GIL is released while planning. OMPL planners seed OMPL's\n"
         "process-wide generator, which OMPL honours only before its first random number in a process.\n"

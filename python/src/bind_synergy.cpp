@@ -12,6 +12,7 @@
 #include "pmdplan/core/input_error.hpp"
 #include "pmdplan/synergy/synergy_fit.hpp"
 #include "pmdplan/synergy/synergy_model_file.hpp"
+#include "pmdplan/synergy/synergy_model_resolution.hpp"
 #include "pmdplan/synergy/synergy_projection.hpp"
 #include "pmdplan/synergy/synergy_readout.hpp"
 
@@ -40,6 +41,13 @@ Eigen::VectorXd denormalised(const SynergyModel& model, const Eigen::VectorXd& u
   for (int j = 0; j < model.jointCount(); ++j)
     posture[j] = model.joints[static_cast<std::size_t>(j)].denormalise(unit[j]);
   return posture;
+}
+
+/// The lower or upper limit of every model joint (radians).
+Eigen::VectorXd jointBounds(const SynergyModel& model, double JointLimit::*bound) {
+  Eigen::VectorXd values(model.jointCount());
+  for (int j = 0; j < values.size(); ++j) values[j] = model.joints[static_cast<std::size_t>(j)].*bound;
+  return values;
 }
 
 int directionsArgument(const SynergyModel& model, int directions) {
@@ -96,8 +104,8 @@ void bindModel(py::module_& m) {
       .def_static(
           "default_for",
           [](const std::string& robot) {
-            const auto path = defaultSynergyModelPath(robot);
-            return modelOf(loadSynergyModel(path), path.string());
+            ResolvedSynergyModel shipped = resolveSynergyModel(robot, {}, SynergyModelNeed::Required);
+            return modelOf(std::move(*shipped.model), shipped.file.string());
           },
           py::arg("robot_name"), "The robot's shipped model (data/synergies/<robot>_default.yaml).")
       .def(
@@ -118,20 +126,8 @@ void bindModel(py::module_& m) {
                                for (const auto& joint : s.model->joints) names.push_back(joint.name);
                                return names;
                              })
-      .def_property_readonly("lower",
-                             [](const PySynergyModel& s) {
-                               Eigen::VectorXd v(s.model->jointCount());
-                               for (int j = 0; j < v.size(); ++j)
-                                 v[j] = s.model->joints[static_cast<std::size_t>(j)].lower;
-                               return v;
-                             })
-      .def_property_readonly("upper",
-                             [](const PySynergyModel& s) {
-                               Eigen::VectorXd v(s.model->jointCount());
-                               for (int j = 0; j < v.size(); ++j)
-                                 v[j] = s.model->joints[static_cast<std::size_t>(j)].upper;
-                               return v;
-                             })
+      .def_property_readonly("lower", [](const PySynergyModel& s) { return jointBounds(*s.model, &JointLimit::lower); })
+      .def_property_readonly("upper", [](const PySynergyModel& s) { return jointBounds(*s.model, &JointLimit::upper); })
       .def_property_readonly("own_axis_joints", [](const PySynergyModel& s) { return s.model->ownAxisJoints; })
       .def_property_readonly(
           "mean", [](const PySynergyModel& s) { return Eigen::VectorXd(s.model->mean); }, "b, normalised units.")
@@ -228,6 +224,20 @@ void bindFit(py::module_& m) {
 }
 
 }  // namespace
+
+PySynergyModel synergyModelArgument(const Task& task, py::handle synergies) {
+  if (py::isinstance<PySynergyModel>(synergies)) return synergies.cast<PySynergyModel>();
+  const std::filesystem::path given =
+      synergies.is_none() ? std::filesystem::path() : std::filesystem::path(py::str(synergies).cast<std::string>());
+  ResolvedSynergyModel resolved;
+  try {
+    resolved = resolveSynergyModelForHand(*task.robot, given, SynergyModelNeed::Required);
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError("", "synergies", e.message());  // the argument's name, not the CLI's flag
+  }
+  return modelOf(std::move(*resolved.model), resolved.file.string());
+}
 
 void bindSynergies(py::module_& m) {
   bindModel(m);

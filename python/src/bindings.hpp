@@ -47,11 +47,17 @@ struct PySynergyModel {
 CheckerKind parseCheckerOption(const std::string& name);
 double parseToleranceOption(double toleranceMm);
 
+/// A `synergies` argument: a SynergyModel, a model file, or None for the robot's shipped model
+/// (resolveSynergyModel, synergy/synergy_model_resolution.hpp, with its message for a robot that
+/// ships none, field "synergies").
+PySynergyModel synergyModelArgument(const Task& task, py::handle synergies);
+
 void bindErrors(py::module_& m);
 void bindRobotAndTask(py::module_& m);
 void bindCollision(py::module_& m);
 void bindSynergies(py::module_& m);
 void bindPlannerSettings(py::module_& m);
 void bindPlanning(py::module_& m);
+void bindValidation(py::module_& m);
 
 }  // namespace pmdplan::python

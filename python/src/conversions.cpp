@@ -101,4 +101,12 @@ py::dict jointDict(const JointLimits& joints, const Eigen::VectorXd& values) {
   return dict;
 }
 
+py::object pythonFromJson(const nlohmann::ordered_json& document) {
+  return py::module_::import("json").attr("loads")(document.dump());
+}
+
+py::object pythonFromJson(const nlohmann::json& document) {
+  return py::module_::import("json").attr("loads")(document.dump());
+}
+
 }  // namespace pmdplan::python

@@ -1,9 +1,10 @@
 #pragma once
 // Between Python values (numpy arrays, sequences, dicts of joint names) and the library's
-// configurations and paths. Bad values are InputErrors naming the argument as `field`.
+// configurations, paths and JSON documents. Bad values are InputErrors naming the argument as `field`.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,10 @@ py::array_t<double> pathArray(const std::vector<Configuration>& path, int dof);
 
 /// {name: value} in joint order.
 py::dict jointDict(const JointLimits& joints, const Eigen::VectorXd& values);
+
+/// A library JSON document as the Python value json.loads gives for its text (the dicts the
+/// CLI's --json prints).
+py::object pythonFromJson(const nlohmann::ordered_json& document);
+py::object pythonFromJson(const nlohmann::json& document);
 
 }  // namespace pmdplan::python

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_core, m) {
   bindSynergies(m);
   bindPlannerSettings(m);
   bindPlanning(m);
+  bindValidation(m);
 }

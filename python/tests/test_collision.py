@@ -56,11 +56,14 @@ def test_bad_checker_inputs_have_the_clis_messages(checkers, cli):
     with pytest.raises(pmdplan.InputError) as raised:
         pmdplan.CollisionChecker(task, "sloppy")
     _, _, stderr = cli("plan", "can_on_table", "--checker", "sloppy")
-    assert str(raised.value) == stderr.strip().splitlines()[-1].removeprefix("pmdplan: error: ")
+    assert raised.value.field == "checker"  # the argument's Python name; the CLI's message
+    assert str(raised.value) == stderr.strip().splitlines()[-1].removeprefix("pmdplan: error: --")
     with pytest.raises(pmdplan.InputError) as raised:
         pmdplan.CollisionChecker(task, "fast", tolerance_mm=0)
     _, _, stderr = cli("check", "can_on_table", "--tolerance-mm", "0")
-    assert str(raised.value) == stderr.strip().splitlines()[-1].removeprefix("pmdplan: error: ")
+    assert raised.value.field == "tolerance_mm"
+    cli_message = stderr.strip().splitlines()[-1].removeprefix("pmdplan: error: ")
+    assert str(raised.value) == cli_message.replace("--tolerance-mm", "tolerance_mm", 1)
     with pytest.raises(pmdplan.InputError, match="configurations"):
         fast.check_batch(np.zeros((3, 5)))
     with pytest.raises(pmdplan.InputError, match="configuration"):

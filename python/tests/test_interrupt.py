@@ -18,7 +18,7 @@ PLAN_FOREVER = """
 import sys, time, pmdplan
 task = pmdplan.Task.load("can_on_table")
 settings = pmdplan.PlannerSettings("pmd")
-settings.neighbour_threshold_factor = 1e-3  # no roadmap edge ever connects: the search never ends
+settings.neighbour_threshold = 1e-3  # no roadmap edge ever connects: the search never ends
 settings.max_samples = 2**31 - 1
 print("started", flush=True)
 began = time.monotonic()

@@ -19,6 +19,7 @@ void setStateFromConfiguration(const PlanningSpace& space, const Configuration& 
 class OmplStateChecker final : public ompl::base::StateValidityChecker {
  public:
   OmplStateChecker(const ompl::base::SpaceInformationPtr& si, const PlanningSpace& space, StateValidator& states);
+  using ompl::base::StateValidityChecker::isValid;  // OMPL's forms with a clearance stay callable
   bool isValid(const ompl::base::State* state) const override;
   bool isValid(const Configuration& q) const;
   std::size_t checks() const { return checks_; }

@@ -15,6 +15,7 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <utility>
@@ -23,7 +24,6 @@
 #include "ompl_pmd_state_sampler.hpp"
 #include "pmdplan/bench/ompl_task_space.hpp"
 #include "pmdplan/core/stop_request.hpp"
-#include "pmdplan/planning/hand_sampling_mode.hpp"
 
 namespace pmdplan {
 namespace {
@@ -38,26 +38,38 @@ PlannerFactory make() {
   return [](const ob::SpaceInformationPtr& si) -> ob::PlannerPtr { return std::make_shared<Planner>(si); };
 }
 
-const std::vector<std::pair<std::string, PlannerFactory>>& plannerFactories() {
-  static const std::vector<std::pair<std::string, PlannerFactory>> factories = {
-      {"RRTConnect", make<og::RRTConnect>()},
-      {"PRM", make<og::PRM>()},
-      {"LazyPRM", make<og::LazyPRM>()},
-      {"KPIECE1", make<og::KPIECE1>()},
-      {"BKPIECE1", make<og::BKPIECE1>()},
-      {"EST", make<og::EST>()},
-      {"RRT", make<og::RRT>()},
+struct KnownPlanner {
+  OmplPlannerKind kind;
+  PlannerFactory factory;
+};
+
+/// OMPL's planners we run, one line each.
+const std::vector<KnownPlanner>& knownPlanners() {
+  static const std::vector<KnownPlanner> planners = {
+      {{"RRTConnect", "OMPL bidirectional RRT"}, make<og::RRTConnect>()},
+      {{"PRM", "OMPL probabilistic roadmap", false}, make<og::PRM>()},  // grows its roadmap in a thread
+      {{"LazyPRM", "OMPL PRM with lazy edge checks"}, make<og::LazyPRM>()},
+      {{"KPIECE1", "OMPL KPIECE"}, make<og::KPIECE1>()},
+      {{"BKPIECE1", "OMPL bidirectional KPIECE"}, make<og::BKPIECE1>()},
+      {{"EST", "OMPL expansive space trees"}, make<og::EST>()},
+      {{"RRT", "OMPL RRT"}, make<og::RRT>()},
   };
-  return factories;
+  return planners;
 }
 
 const PlannerFactory* findFactory(const std::string& name) {
-  for (const auto& [known, factory] : plannerFactories())
-    if (known == name) return &factory;
+  for (const KnownPlanner& known : knownPlanners())
+    if (known.kind.name == name) return &known.factory;
   return nullptr;
 }
 
 }  // namespace
+
+std::vector<OmplPlannerKind> omplPlannerKinds() {
+  std::vector<OmplPlannerKind> kinds;
+  for (const KnownPlanner& known : knownPlanners()) kinds.push_back(known.kind);
+  return kinds;
+}
 
 bool isOmplPlannerName(const std::string& name) { return findFactory(name) != nullptr; }
 
@@ -72,11 +84,8 @@ OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSp
 
   const OmplTaskSpace taskSpace = makeOmplTaskSpace(space, states, motions);
   const ob::SpaceInformationPtr& si = taskSpace.spaceInformation;
-  if (pmdSampling) {
-    std::shared_ptr<const HandSampler> hands =
-        makeHandSampler(HandSamplingMode::Synergy, space, pmdSampling->synergies, pmdSampling->parameters.pmdBox);
-    installPmdStateSampler(*si->getStateSpace(), space, hands, start, goal, pmdSampling->parameters);
-  }
+  if (pmdSampling)
+    installPmdStateSampler(*si->getStateSpace(), space, pmdSampling->hands, start, goal, pmdSampling->parameters);
 
   ob::ScopedState<> startState(si), goalState(si);
   setStateFromConfiguration(space, start, startState.get());
@@ -90,12 +99,18 @@ OmplPlanningResult planWithOmpl(const std::string& plannerName, const PlanningSp
   const ob::PlannerPtr planner = (*factory)(si);
   planner->setProblemDefinition(problem);
   planner->setup();
-  const ob::PlannerStatus status = planner->solve(ob::plannerOrTerminationCondition(
-      ob::timedPlannerTerminationCondition(timeLimitSeconds),
-      ob::PlannerTerminationCondition([] { return stopRequested(); })));  // core/stop_request.hpp
+  const ob::PlannerTerminationCondition stopped([] { return stopRequested(); });  // core/stop_request.hpp
+  const ob::PlannerStatus status = planner->solve(
+      std::isfinite(timeLimitSeconds)
+          ? ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(timeLimitSeconds), stopped)
+          : stopped);
   result.planningTimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   result.status = status.asString();
   result.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
+  result.plannerStatus = result.solved                                ? PlannerStatus::Solved
+                         : status == ob::PlannerStatus::INVALID_START ? PlannerStatus::InvalidStart
+                         : status == ob::PlannerStatus::INVALID_GOAL  ? PlannerStatus::InvalidGoal
+                                                                      : PlannerStatus::TimeLimit;
   result.stateChecks = taskSpace.stateChecks();
   result.motionChecks = motions.statesChecked() - motionChecksBefore;
   ob::PlannerData data(si);

@@ -6,8 +6,11 @@
 #include <ompl/geometric/PathGeometric.h>
 
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
+#include "pmdplan/core/input_error.hpp"
+#include "pmdplan/planning/planner_setting_table.hpp"
 #include "pmdplan/planning/pmd_roadmap_planner.hpp"
 
 namespace pmdplan {
@@ -71,14 +74,34 @@ class SpaceInformationMotions final : public MotionValidator {
   std::size_t checks_ = 0;
 };
 
-/// Planner::declareParam takes member functions; the settings live in one struct, so the parameter
-/// set is given functions on it directly.
-template <typename T>
-void declare(ob::ParamSet& set, const std::string& name, std::function<void(T)> setter, std::function<T()> getter,
-             const std::string& range) {
-  set.declareParam<T>(name, setter, getter);
-  if (!range.empty()) set[name].setRangeSuggestion(range);
-}
+/// One row of plannerSettingTable() as an OMPL parameter of the planner's settings: OMPL's
+/// parameters are text, and so are the table's setters and getters. A value the row rejects is
+/// refused (setParam returns false) with OMPL's warning, as OMPL's own parameters do.
+class TableSettingParam final : public ob::GenericParam {
+ public:
+  TableSettingParam(const PlannerSetting& row, PlannerSettings& settings)
+      : ob::GenericParam(row.name()), row_(row), settings_(settings) {
+    if (row.kind == SettingKind::Choice || row.kind == SettingKind::Switch) {
+      std::string choices;
+      for (const std::string& choice : row.choices) choices += (choices.empty() ? "" : ",") + choice;
+      setRangeSuggestion(choices);  // OMPL's form of an enum's values
+    }
+  }
+  bool setValue(const std::string& value) override {
+    try {
+      row_.set(settings_, value);
+      return true;
+    } catch (const InputError& e) {
+      OMPL_WARN("Invalid value for parameter '%s': %s", name_.c_str(), e.message().c_str());
+      return false;
+    }
+  }
+  std::string getValue() const override { return row_.get(settings_); }
+
+ private:
+  const PlannerSetting& row_;
+  PlannerSettings& settings_;
+};
 
 ob::PlannerStatus::StatusType omplStatus(PlannerStatus status) {
   switch (status) {
@@ -118,39 +141,8 @@ OmplPmdPlanner::OmplPmdPlanner(const ob::SpaceInformationPtr& si, PlanningSpace 
 OmplPmdPlanner::~OmplPmdPlanner() { releaseDataStates(); }
 
 void OmplPmdPlanner::declareParameters() {
-  auto& p = parameters_;
-  auto& set = params();
-  declare<double>(
-      set, "initial_arm_half_size", [&p](double v) { p.rhoA = v; }, [&p] { return p.rhoA; },
-      "0.0001:0.0001:1.");
-  declare<bool>(
-      set, "linear_arm_box_growth",
-      [&p](bool v) { p.rhoAGrowth = v ? ArmBoxGrowth::Linear : ArmBoxGrowth::Factorial; },
-      [&p] { return p.rhoAGrowth == ArmBoxGrowth::Linear; }, "0,1");
-  declare<unsigned>(
-      set, "neighbour_count", [&p](unsigned v) { p.neighbours = v; },
-      [&p] { return static_cast<unsigned>(p.neighbours); }, "1:1:100");
-  declare<double>(
-      set, "neighbour_threshold_factor", [&p](double v) { p.neighbourThreshold = v; },
-      [&p] { return p.neighbourThreshold; }, "0.1:0.1:10.");
-  declare<int>(
-      set, "arm_trials", [&p](int v) { p.armTrials = v; }, [&p] { return p.armTrials; }, "1:1:100");
-  declare<int>(
-      set, "hand_trials", [&p](int v) { p.handTrials = v; }, [&p] { return p.handTrials; }, "1:1:100");
-  declare<unsigned>(
-      set, "min_sweep_visits", [&p](unsigned v) { p.sweepVisits = v; },
-      [&p] { return static_cast<unsigned>(p.sweepVisits); }, "1:1:100");
-  declare<unsigned long>(
-      set, "max_samples", [&p](unsigned long v) { p.maxSamples = v; },
-      [&p] { return static_cast<unsigned long>(p.maxSamples); }, "");
-  declare<double>(
-      set, "kappa", [&p](double v) { p.pmdBox.kappa = v; }, [&p] { return p.pmdBox.kappa; }, "0.1:0.1:5.");
-  declare<int>(
-      set, "max_pmds", [&p](int v) { p.pmdBox.maxPmds = v; }, [&p] { return p.pmdBox.maxPmds; }, "1:1:12");
-  declare<bool>(
-      set, "smooth", [&p](bool v) { p.smooth = v; }, [&p] { return p.smooth; }, "0,1");
-  declare<unsigned long>(
-      set, "seed", [&p](unsigned long v) { p.seed = v; }, [&p] { return static_cast<unsigned long>(p.seed); }, "");
+  for (const PlannerSetting& row : plannerSettingTable())
+    params().add(std::make_shared<TableSettingParam>(row, parameters_));
 }
 
 void OmplPmdPlanner::setup() {

@@ -55,14 +55,13 @@ PlannerSettings PlannerSettings::preset(PlannerPreset preset, HandSamplingMode m
 void PlannerSettings::check() const {
   const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
   if (!positive(rhoA) || rhoA > 1.0)
-    throw InputError(
-        "", "rho-a",
-        "must be a number in (0, 1] (normalised arm-joint units), got " + messageNumberText(rhoA));
+    throw InputError("", "rho-a",
+                     "must be a number in (0, 1] (normalised arm-joint units), got " + messageNumberText(rhoA));
   if (neighbours < 1) throw InputError("", "neighbours", "must be a whole number >= 1");
   if (!positive(neighbourThreshold))
-    throw InputError("", "neighbour-threshold",
-                     "must be a positive, finite factor of the start-goal distance, got " +
-                         messageNumberText(neighbourThreshold));
+    throw InputError(
+        "", "neighbour-threshold",
+        "must be a positive, finite factor of the start-goal distance, got " + messageNumberText(neighbourThreshold));
   if (armTrials < 1)
     throw InputError("", "arm-trials", "must be a whole number >= 1, got " + std::to_string(armTrials));
   if (handTrials < 1)

@@ -29,7 +29,8 @@ void PmdRoadmapPlanner::clear() {
   clearResults();
 }
 
-// Algorithm 4 (RoadMap). The j and h loops live in sampleHypercube, FINDPATH in findPath.
+// Algorithm 4 (RoadMap). The j and h loops live in drawHandArm (hand_arm_draw.hpp), FINDPATH in
+// findPath.
 PlannerStatus PmdRoadmapPlanner::solve() {
   setup();
   clear();

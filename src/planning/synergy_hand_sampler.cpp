@@ -18,8 +18,7 @@ SynergyHandSampler::SynergyHandSampler(const PlanningSpace& space, const Synergy
                                        SynergySamplingSettings parameters) {
   if (!(parameters.kappa > 0.0) || !std::isfinite(parameters.kappa))
     reject("kappa", "must be a positive number of standard deviations, got " + std::to_string(parameters.kappa));
-  if (parameters.maxPmds < 1)
-    reject("max_directions", "must be at least 1, got " + std::to_string(parameters.maxPmds));
+  if (parameters.maxPmds < 1) reject("max_directions", "must be at least 1, got " + std::to_string(parameters.maxPmds));
 
   std::vector<std::string> handJoints;
   for (const int i : space.handIndices) handJoints.push_back(space.joints[static_cast<std::size_t>(i)].name);

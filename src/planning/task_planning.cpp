@@ -1,10 +1,9 @@
 #include "pmdplan/planning/task_planning.hpp"
 
 #include <chrono>
+#include <memory>
 
-#include "pmdplan/planning/lazy_pmd_planner.hpp"
 #include "pmdplan/planning/path_smoothing.hpp"
-#include "pmdplan/planning/pmd_connect_planner.hpp"
 #include "pmdplan/planning/robot_planning_space.hpp"
 
 namespace pmdplan {
@@ -27,9 +26,11 @@ std::optional<std::size_t> appendClosing(const Task& task, const TaskApproach& a
 
 TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningSettings& options,
                             ProgressCallback progress) {
+  const PlannerEntry& entry = options.planner ? *options.planner : ourPlanners().at("pmd");
   const PlanningSpace space = planningSpaceFromRobot(*task.robot);
   options.parameters.check();
-  auto sampler = makeHandSampler(options.mode, space, options.synergies, options.parameters.pmdBox);
+  const std::unique_ptr<Planner> planner =
+      entry.allocate({space, checking.states(), checking.motions(), options.parameters, options.synergies});
   TaskPlanningResult result;
   // A start in collision is reported as the planner reports it, before the goal is examined as
   // a grasp (which refuses a goal in contact with anything but the target).
@@ -40,27 +41,11 @@ TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const
   }
   const TaskApproach approach = taskApproach(task, checking, options.grasp);
   result.grasp = approach.grasp;
-  const Configuration& approachGoal = approach.end(task);
-  if (options.algorithm == RoadmapAlgorithm::Lazy) {
-    LazyPmdPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
-    planner.setStartAndGoal(task.start, approachGoal);
-    result.status = planner.solve();
-    result.path = planner.path();
-    result.statistics = planner.statistics();
-  } else if (options.algorithm == RoadmapAlgorithm::Connect) {
-    PmdConnectPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
-    planner.setStartAndGoal(task.start, approachGoal);
-    result.status = planner.solve();
-    result.path = planner.path();
-    result.statistics = planner.statistics();
-  } else {
-    PmdRoadmapPlanner planner(space, checking.states(), checking.motions(), std::move(sampler), options.parameters);
-    planner.setStartAndGoal(task.start, approachGoal);
-    if (progress) planner.setProgressCallback(std::move(progress));
-    result.status = planner.solve();
-    result.path = planner.path();
-    result.statistics = planner.statistics();
-  }
+  planner->setStartAndGoal(task.start, approach.end(task));
+  if (progress) planner->setProgressCallback(std::move(progress));
+  result.status = planner->solve();
+  result.path = planner->path();
+  result.statistics = planner->statistics();
   // Finding the pre-grasp is part of solving the task.
   result.statistics.planningTime += approach.seconds;
   if (result.statistics.solved()) result.closingFrom = appendClosing(task, approach, result.path);

@@ -37,8 +37,8 @@ std::vector<int> ownAxisIndices(const JointLimits& joints, const SynergyFitSetti
 
 }  // namespace
 
-SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitSettings& options,
-                           const PostureSource& source) {
+SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints,
+                           const SynergyFitSettings& options, const PostureSource& source) {
   const auto jointCount = static_cast<Eigen::Index>(joints.size());
   if (postures.cols() != jointCount)
     throw std::invalid_argument("fitSynergyModel: postures have " + std::to_string(postures.cols()) + " columns for " +

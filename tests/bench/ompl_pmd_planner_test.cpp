@@ -52,13 +52,12 @@ TEST(OmplPmdPlanner, SettingsAreOmplParameters) {
   CanOnTable p;
   OmplPmdPlanner planner(p.omplSpace.spaceInformation, p.space, HandSamplingMode::Synergy, p.synergies);
   EXPECT_EQ(planner.getName(), "PMD");
-  for (const char* name :
-       {"initial_arm_half_size", "linear_arm_box_growth", "neighbour_count", "neighbour_threshold_factor", "arm_trials",
-        "hand_trials", "min_sweep_visits", "max_samples", "smooth", "seed"})
+  for (const char* name : {"rho_a", "rho_a_growth", "neighbours", "neighbour_threshold", "arm_trials", "hand_trials",
+                           "sweep_visits", "max_samples", "smooth", "seed"})
     EXPECT_TRUE(planner.params().hasParam(name)) << name;
-  EXPECT_TRUE(planner.params().setParam("neighbour_count", "5"));
+  EXPECT_TRUE(planner.params().setParam("neighbours", "5"));
   EXPECT_TRUE(planner.params().setParam("arm_trials", "7"));
-  EXPECT_TRUE(planner.params().setParam("linear_arm_box_growth", "1"));
+  EXPECT_TRUE(planner.params().setParam("rho_a_growth", "linear"));
   EXPECT_EQ(planner.parameters().neighbours, 5u);
   EXPECT_EQ(planner.parameters().armTrials, 7);
   EXPECT_EQ(planner.parameters().rhoAGrowth, ArmBoxGrowth::Linear);
@@ -147,7 +146,7 @@ TEST(OmplPmdPlanner, RunsInOmplsBenchmarkBesideRRTConnect) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::filesystem::remove(log);
   EXPECT_NE(text.find("geometric_PMD"), std::string::npos);
-  EXPECT_NE(text.find("neighbour_count = 10"), std::string::npos);
+  EXPECT_NE(text.find("neighbours = 10"), std::string::npos);
 }
 
 }  // namespace

@@ -147,7 +147,9 @@ TEST_F(GraspPathCli, ValidateAndTheViewerDataJudgeAGraspPathAlikeWithItsContactA
   for (std::size_t i = 0; i < states; ++i) {
     EXPECT_TRUE(path["colliding_links"][i].empty()) << "state " << i << ": allowed contact drawn as a collision";
     EXPECT_GT(path["clearance"][i].get<double>(), 0.0) << "state " << i << ": the clearance counts allowed contact";
-    if (static_cast<int>(i) <= pregrasp) EXPECT_TRUE(path["contact_links"][i].empty()) << "state " << i;
+    if (static_cast<int>(i) <= pregrasp) {
+      EXPECT_TRUE(path["contact_links"][i].empty()) << "state " << i;
+    }
     for (const auto& link : path["contact_links"][i]) contact.insert(link.get<std::string>());
   }
   EXPECT_FALSE(path["contact_links"][states - 1].empty()) << "the goal grasps the can";

@@ -17,9 +17,20 @@ TEST(PlannerSettingsCli, BothHelpsListEverySettingOfTheTable) {
   const auto bench = runCli("bench --help");
   ASSERT_EQ(plan.exitCode, 0);
   ASSERT_EQ(bench.exitCode, 0);
+  const PlannerSettings defaults = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
   for (const PlannerSetting& s : plannerSettingTable()) {
-    EXPECT_NE(plan.out.find("--" + s.flag + " "), std::string::npos) << "plan --help lacks --" << s.flag;
-    EXPECT_NE(bench.out.find("--" + s.flag + " "), std::string::npos) << "bench --help lacks --" << s.flag;
+    // "--rho-a NUMBER   rho_a: initial half-size ... (default 0.001)": the flag, its value's form,
+    // its help and its default, on the option's lines.
+    const std::string option = "--" + s.flag + " " + s.valueName();
+    for (const auto* help : {&plan.out, &bench.out}) {
+      const std::size_t at = help->find(option);
+      ASSERT_NE(at, std::string::npos) << "--help lacks " << option;
+      const std::string lines = help->substr(at, help->find("\n  -", at + 1) - at);
+      if (help == &plan.out) {  // bench's --seed has its own help
+        EXPECT_NE(lines.find(s.help.substr(1)), std::string::npos) << lines;
+      }
+      EXPECT_NE(lines.find("(default " + s.get(defaults)), std::string::npos) << lines;
+    }
   }
   EXPECT_NE(plan.out.find("--preset"), std::string::npos);
   EXPECT_NE(bench.out.find("--preset"), std::string::npos);

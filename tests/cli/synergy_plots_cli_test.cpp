@@ -28,7 +28,7 @@ TEST(SynergyPlotsCli, ARecordingGivesBothFiguresBesideItsUsualOutput) {
   const auto result = runCli("synergies " + quoted(kDataDir / "glove" / "synthetic_operator_sample.csv") +
                              " --json --plots " + quoted(plots));
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(result.out)) << "the figures do not disturb the JSON on stdout";
+  EXPECT_TRUE(nlohmann::json::accept(result.out)) << "the figures do not disturb the JSON on stdout";
   EXPECT_THAT(result.err, HasSubstr("joint_pairs.svg"));
   const std::string pairs = contents(plots / "joint_pairs.svg");
   EXPECT_THAT(pairs, HasSubstr("middle_proximal  vs  ring_proximal"));

@@ -1,9 +1,9 @@
 // `pmdplan view`, run as the real program: the viewer folder and its data for a can_on_table
 // path, byte-identical on a second run, a clear error (exit 2, the file and key) for a path that
 // does not fit the robot, and the page itself in Debian's chromium (viewer/test, through node):
-// ready, slider, finger joint, image, screenshot. The browser sees a path `pmdplan plan` made;
-// the data tests use the straight joint-space line from start to goal (it passes through the
-// table; the viewer does not care), so they do not depend on the planner.
+// ready, slider, finger joint, image, screenshot, in five parts. The browser sees a path
+// `pmdplan plan` made; the data tests use the straight joint-space line from start to goal (it
+// passes through the table; the viewer does not care), so they do not depend on the planner.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -15,6 +15,8 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "pmdplan/io/files/path_file.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
@@ -217,10 +219,12 @@ bool viewerToolsInstalled() {
          std::filesystem::exists(kSourceTree / "viewer" / "node_modules" / "esbuild");
 }
 
-TEST(ViewerBrowser, OpensThePathInChromiumAndTheSliderMovesTheHand) {
+/// Plans can_on_table and its trajectory, then runs one part of viewer/test/viewer_browser_test.mjs
+/// on them in chromium: one test per part, so that ctest runs them side by side. The screenshots
+/// are kept in build/test-output/viewer/<part>/, for a person to look at after the run.
+void runViewerBrowserPart(const std::string& part, const std::vector<std::string>& screenshots) {
   ASSERT_TRUE(viewerToolsInstalled()) << "viewer/node_modules is missing: run scripts/install-deps (npm ci in viewer/)";
-  // Kept in the build directory, for a person to look at after the run.
-  const auto work = kBuildDirectory / "test-output" / "viewer";
+  const auto work = kBuildDirectory / "test-output" / "viewer" / part;
   std::filesystem::remove_all(work);
   std::filesystem::create_directories(work);
   const auto path = work / "can_on_table.path.json";
@@ -229,10 +233,30 @@ TEST(ViewerBrowser, OpensThePathInChromiumAndTheSliderMovesTheHand) {
   ASSERT_EQ(planned.exitCode, 0) << planned.out << planned.err;
   const int code = runNode(quoted(kSourceTree / "viewer" / "test" / "viewer_browser_test.mjs") + " --cli " +
                            quoted(PMDPLAN_CLI_PATH) + " --path " + quoted(path) + " --work " + quoted(work) +
-                           " --trajectory " + quoted(trajectory));
+                           " --trajectory " + quoted(trajectory) + " --part " + part);
   EXPECT_EQ(code, 0) << "see the output above";
-  EXPECT_TRUE(std::filesystem::is_regular_file(work / "viewer.png"));
-  EXPECT_TRUE(std::filesystem::is_regular_file(work / "viewer-trajectory.png"));
+  for (const std::string& screenshot : screenshots)
+    EXPECT_TRUE(std::filesystem::is_regular_file(work / screenshot)) << screenshot;
+}
+
+TEST(ViewerBrowser, OpensThePathInChromiumAndTheSliderMovesTheHand) {
+  runViewerBrowserPart("motion", {"viewer-start.png"});
+}
+
+TEST(ViewerBrowser, DrawsStartGoalPalmTraceAndObjectsKeepsTheStateInTheAddressAndOpensFromTheDisk) {
+  runViewerBrowserPart("display", {"viewer-start-goal.png", "viewer-objects.png", "viewer.png"});
+}
+
+TEST(ViewerBrowser, DrawsTheStraightSegmentThroughTheCanInCollision) {
+  runViewerBrowserPart("collisions", {"viewer-collision.png"});
+}
+
+TEST(ViewerBrowser, PlaysSeveralPathsInSyncAndWarnsOfAMovedGoal) {
+  runViewerBrowserPart("paths", {"viewer-paths.png", "viewer-ends-warning.png"});
+}
+
+TEST(ViewerBrowser, PlaysTheTimedTrajectoryInRealTimeWithItsPlotsAndTwoInSyncByTime) {
+  runViewerBrowserPart("trajectory", {"viewer-trajectory.png", "viewer-paths-timed.png"});
 }
 
 TEST(ViewerBrowser, TheCommittedBundleMatchesItsSources) {

@@ -172,9 +172,10 @@ TEST(FastCollisionChecker, BatchesGiveTheExactCheckersAnswers) {
         for (int k = 0; k < count; ++k) {
           const bool expected = reference.isValid(configurations[k]);
           ASSERT_EQ(valid[k], expected) << name << " batch " << batchIndex << " lane " << k;
-          if (expected)
+          if (expected) {
             for (std::size_t p = 0; p < fast.pairCount(); ++p)
               ASSERT_GE(gaps[static_cast<std::size_t>(k) * fast.pairCount() + p], 0.0);
+          }
           ++total;
           colliding += !expected;
         }
@@ -221,7 +222,9 @@ TEST(FastCollisionChecker, RefusesASimdLevelTheCpuCannotRun) {
   FastCollisionChecker fast(task, exact);
   EXPECT_EQ(fast.simdLevel(), widestSimdLevel());
   EXPECT_THROW(fast.setSimdLevel(static_cast<SimdLevel>(7)), std::invalid_argument);
-  if (widestSimdLevel() != SimdLevel::avx512) EXPECT_THROW(fast.setSimdLevel(SimdLevel::avx512), std::invalid_argument);
+  if (widestSimdLevel() != SimdLevel::avx512) {
+    EXPECT_THROW(fast.setSimdLevel(SimdLevel::avx512), std::invalid_argument);
+  }
   fast.setSimdLevel(SimdLevel::sse2);
   EXPECT_EQ(fast.simdLevel(), SimdLevel::sse2);
 }

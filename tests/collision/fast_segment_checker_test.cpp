@@ -76,8 +76,9 @@ TEST(FastSegmentChecker, EqualsSegmentCheckerOnRandomSegmentsOfEveryTask) {
       const bool expected = slow.isValid(from, to);
       ASSERT_EQ(batched.isValid(from, to), expected) << name << " segment " << made;
       // A free segment: every interior state was either evaluated or skipped as provably free.
-      if (expected)
+      if (expected) {
         ASSERT_EQ(batched.statesChecked() + batched.statesSkipped() - fastBefore, slow.statesChecked() - slowBefore);
+      }
       ++total;
       blocked += !expected;
     }

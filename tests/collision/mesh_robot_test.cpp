@@ -155,8 +155,9 @@ TEST(MeshRobot, FastEqualsExactOn100000ConfigurationsOfTheFiveTasks) {
       const Configuration q = testing::taskConfiguration(task, random, s % 3);
       const bool free = reference.isValid(q);
       ASSERT_EQ(fast.isValid(q), free) << name << " sample " << s;
-      if (s % 8 == 0)
+      if (s % 8 == 0) {
         ASSERT_EQ(fast.isArmValid(q), reference.isArmValid(q)) << name << " sample " << s << " (arm only)";
+      }
       const ScreenResult screen = fast.screen(q);
       // An enclosure never proves an overlap: every pair not proven apart went to FCL.
       ASSERT_TRUE(screen.overlappingSelf.empty() && screen.overlappingObstacle.empty()) << name << " sample " << s;
@@ -210,12 +211,15 @@ TEST(MeshRobot, AgreesWithThePrimitivesWhereTheTessellationDecides) {
     for (int s = 0; s < test::trials(4000, 400); ++s) {
       const Configuration q = testing::taskConfiguration(primitives, random, s % 3);
       const bool primitiveFree = primitive.isValid(q), insideFree = inside.isValid(q), aroundFree = around.isValid(q);
-      if (primitiveFree)
+      if (primitiveFree) {
         ASSERT_TRUE(insideFree) << name << " sample " << s << ": inscribed meshes collide, primitives do not";
-      if (!insideFree)
+      }
+      if (!insideFree) {
         ASSERT_FALSE(aroundFree) << name << " sample " << s << ": circumscribed meshes free, inscribed collide";
-      if (!primitiveFree)
+      }
+      if (!primitiveFree) {
         ASSERT_FALSE(aroundFree) << name << " sample " << s << ": circumscribed meshes free, primitives collide";
+      }
       ++total;
       primitiveColliding += !primitiveFree, inscribedColliding += !insideFree, circumscribedColliding += !aroundFree;
     }
@@ -235,7 +239,7 @@ TEST(MeshRobot, GeometryWhollyInsideAClosedMeshCollidesWithIt) {
                                             testing::Tessellation::Circumscribed);
   dir.write("sheet.stl",
             testing::stlText({{Eigen::Vector3d(-5, -5, 3), Eigen::Vector3d(5, -5, 3), Eigen::Vector3d(0, 5, 3)}}));
-  for (const std::string robot : {std::string("sah_tx90"), urdf.string()}) {
+  for (const std::string& robot : {std::string("sah_tx90"), urdf.string()}) {
     std::string text = testing::builtInTaskText("can_on_table", robot);
     const std::string marker = "obstacles:\n";
     text.insert(text.find(marker) + marker.size(),

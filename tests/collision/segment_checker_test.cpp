@@ -108,8 +108,8 @@ TEST(SweptDistanceBound, BoundsTheRealDisplacementOfEveryLinkShape) {
       for (const auto& shape : model.links()[l].collisionShapes) {
         // The shape's centre and the farthest points along its frame axes.
         const double r = boundingRadius(shape.shape);
-        for (const Eigen::Vector3d offset : {Eigen::Vector3d::Zero().eval(), Eigen::Vector3d(r, 0, 0),
-                                             Eigen::Vector3d(0, r, 0), Eigen::Vector3d(0, 0, r)})
+        for (const Eigen::Vector3d& offset : {Eigen::Vector3d::Zero().eval(), Eigen::Vector3d(r, 0, 0),
+                                              Eigen::Vector3d(0, r, 0), Eigen::Vector3d(0, 0, r)})
           moved = std::max(moved, ((pa[l] * shape.pose * offset) - (pb[l] * shape.pose * offset)).norm());
       }
     EXPECT_LE(moved, limit + 1e-12) << "trial " << trial;

@@ -164,11 +164,11 @@ TEST(StaticFileServer, OnlyAHostNamingThisServerIsAnswered) {
   const auto withHost = [&](const std::string& fields) {
     return httpStatus(httpExchange(server.port(), "GET /index.html HTTP/1.1\r\n" + fields + "\r\n"));
   };
-  for (const std::string host : {"127.0.0.1:" + port, "localhost:" + port, "LocalHost:" + port, "[::1]:" + port,
-                                 std::string("127.0.0.1"), std::string("localhost")})
+  for (const std::string& host : {"127.0.0.1:" + port, "localhost:" + port, "LocalHost:" + port, "[::1]:" + port,
+                                  std::string("127.0.0.1"), std::string("localhost")})
     EXPECT_EQ(withHost("Host: " + host + "\r\n"), 200) << host;
-  for (const std::string host : {"evil.example:" + port, std::string("evil.example"), std::string("127.0.0.1:1"),
-                                 "127.0.0.2:" + port, "localhost.evil.example:" + port, std::string("")})
+  for (const std::string& host : {"evil.example:" + port, std::string("evil.example"), std::string("127.0.0.1:1"),
+                                  "127.0.0.2:" + port, "localhost.evil.example:" + port, std::string("")})
     EXPECT_EQ(withHost("Host: " + host + "\r\n"), 403) << host;
   EXPECT_EQ(withHost(""), 400);  // no Host at all
   EXPECT_EQ(httpStatus(httpExchange(server.port(), "GET /index.html HTTP/1.0\r\n\r\n")), 400);
@@ -195,7 +195,7 @@ TEST(StaticFileServer, TheResponseFunctionNeverServesBytesFromOutsideTheRoot) {
     return staticFileResponse(s.site, "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n", 8000);
   };
   EXPECT_EQ(response("/index.html").substr(response("/index.html").size() - 13), "<p>inside</p>");
-  for (const std::string target : {"//" + s.secret.string(), std::string("/out"), std::string("/../secret.txt")})
+  for (const std::string& target : {"//" + s.secret.string(), std::string("/out"), std::string("/../secret.txt")})
     EXPECT_EQ(response(target).find("TOP-SECRET"), std::string::npos) << target;
 }
 

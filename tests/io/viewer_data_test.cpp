@@ -25,7 +25,7 @@ TEST(ViewerData, AMeshObstacleTravelsWithTheFolderAndARobotWithoutModelHasNoSyne
   const auto mesh = dir.write("part.stl", "solid part\nendsolid part\n");
   Obstacle part;
   part.name = "part";
-  part.shape = MeshShape{mesh, Eigen::Vector3d(0.001, 0.001, 0.001)};
+  part.shape = MeshShape{mesh, Eigen::Vector3d(0.001, 0.001, 0.001), nullptr};
   part.pose.translation() << 0.1, 0.2, 0.3;
   task.obstacles.push_back(part);
 

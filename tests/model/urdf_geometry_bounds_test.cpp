@@ -83,7 +83,7 @@ TEST(UrdfGeometryBounds, APackagePathMayNotLeaveItsPackage) {
   const auto urdfFile = dir.path() / "r.urdf";
   EXPECT_EQ(resolveResourcePath("package://pkg/meshes/tri.obj", urdfFile, "f"), mesh);
   EXPECT_EQ(resolveResourcePath("package://pkg/meshes/../meshes/tri.obj", urdfFile, "f"), mesh);
-  for (const std::string escape :
+  for (const std::string& escape :
        std::vector<std::string>{"package://pkg/../../secret.obj", "package://pkg/meshes/../../../secret.obj",
                                 "package://../secret.obj", "package://pkg/" + (dir.path() / "secret.obj").string()})
     expectInputError([&] { resolveResourcePath(escape, urdfFile, "link[x]"); }, urdfFile.string(), "link[x]",

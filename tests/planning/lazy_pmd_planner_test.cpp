@@ -5,13 +5,11 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "planning/toy_problem.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/planning/path_smoothing.hpp"
 #include "pmdplan/planning/synergy_hand_sampler.hpp"
 
 namespace pmdplan {
@@ -37,21 +35,17 @@ struct LazyToyRun {
   }
 };
 
-TEST(LazyPmdPlanner, SolvesTheNarrowPassageWithValidPaths) {
+// What every planner does (a valid path, repeatable runs, statuses, limits, errors) is the contract
+// suite's (tests/bench/planner_contract_test.cpp); here is what is the lazy planner's own.
+
+TEST(LazyPmdPlanner, EverySeedSolvesAndTheStatisticsCountTheLazyRoadmap) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     LazyToyRun run(toy::withSeed(seed));
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
-    const std::vector<Configuration>& path = run.planner.path();
-    ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
-    EXPECT_EQ(path.front(), toy::start());
-    EXPECT_EQ(path.back(), toy::goal());
-    EXPECT_TRUE(toy::densePathIsFree(path)) << "seed " << seed;
+    EXPECT_TRUE(toy::densePathIsFree(run.planner.path())) << "seed " << seed;
     EXPECT_TRUE(toy::densePathIsFree(run.planner.unsmoothedPath())) << "seed " << seed;
-    for (const Configuration& q : path) EXPECT_TRUE(toy::space().withinLimits(q, 0.0));
 
     const PlanningStatistics& stats = run.planner.statistics();
-    EXPECT_EQ(stats.pathNodes, path.size());
-    EXPECT_LE(stats.pathLength, stats.pathLengthBeforeSmoothing + 1e-12);
     EXPECT_EQ(stats.roadmapNodes, run.planner.roadmap().nodeCount());
     EXPECT_EQ(stats.stateChecks, run.stateValidator.checkCount());
     EXPECT_EQ(stats.motionChecks, run.motionValidator.statesChecked());
@@ -90,29 +84,6 @@ TEST(LazyPmdPlanner, AFreeStraightSegmentIsOneMotionCheckAndNoSample) {
   EXPECT_EQ(run.motionValidator.calls(), 1u);
 }
 
-TEST(LazyPmdPlanner, TheSameSeedGivesTheSamePath) {
-  LazyToyRun first(toy::withSeed(17));
-  LazyToyRun second(toy::withSeed(17));
-  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
-  ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
-  EXPECT_EQ(first.planner.path(), second.planner.path());
-  EXPECT_EQ(first.planner.unsmoothedPath(), second.planner.unsmoothedPath());
-  EXPECT_EQ(first.planner.statistics().samples, second.planner.statistics().samples);
-  EXPECT_EQ(first.planner.statistics().stateChecks, second.planner.statistics().stateChecks);
-  EXPECT_EQ(first.planner.statistics().motionChecks, second.planner.statistics().motionChecks);
-  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved) << "solve() again repeats the run";
-  EXPECT_EQ(first.planner.path(), second.planner.path());
-
-  std::set<std::vector<double>> distinct;
-  for (std::uint64_t seed = 20; seed < 25; ++seed) {
-    LazyToyRun other(toy::withSeed(seed));
-    ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
-    const Configuration& middle = other.planner.unsmoothedPath()[1];
-    distinct.insert(std::vector<double>(middle.data(), middle.data() + middle.size()));
-  }
-  EXPECT_GT(distinct.size(), 1u) << "other seeds sample other nodes";
-}
-
 TEST(LazyPmdPlanner, AClosedWallStopsAtTheSampleLimit) {
   PlannerSettings parameters = toy::withSeed(2);
   parameters.maxSamples = 500;
@@ -121,14 +92,6 @@ TEST(LazyPmdPlanner, AClosedWallStopsAtTheSampleLimit) {
   EXPECT_TRUE(run.planner.path().empty());
   EXPECT_GE(run.planner.statistics().samples, 500u);
   EXPECT_EQ(run.planner.statistics().finalArmHalfSize, 1.0) << "rho_a grew to the whole arm box";
-}
-
-TEST(LazyPmdPlanner, ACollidingStartOrGoalIsReported) {
-  const Configuration inWall = toy::fromUnit({0.5, 0.9, 0.3, 0.9, 0.9, 0.5});
-  LazyToyRun badStart(toy::withSeed(1), toy::Wall{}, inWall, toy::goal());
-  EXPECT_EQ(badStart.planner.solve(), PlannerStatus::InvalidStart);
-  LazyToyRun badGoal(toy::withSeed(1), toy::Wall{}, toy::start(), inWall);
-  EXPECT_EQ(badGoal.planner.solve(), PlannerStatus::InvalidGoal);
 }
 
 TEST(LazyPmdPlanner, BadSettingsAreInputErrorsNamingTheFlag) {

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "pmdplan/core/input_error.hpp"
+#include "pmdplan/planning/planner_setting_table.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
 
 namespace pmdplan {
@@ -52,6 +53,7 @@ void expectRejected(const PlannerSettings& parameters, const std::string& field)
     ADD_FAILURE() << "accepted bad " << field;
   } catch (const InputError& error) {
     EXPECT_EQ(error.field(), field);
+    EXPECT_NE(findPlannerSetting(error.field()), nullptr) << "a check names a setting the table lacks: " << field;
     EXPECT_TRUE(error.file().empty());
   }
 }

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -32,21 +31,17 @@ struct ConnectToyRun {
   }
 };
 
-TEST(PmdConnectPlanner, SolvesTheNarrowPassageWithValidPaths) {
+// What every planner does (a valid path, repeatable runs, statuses, limits, errors) is the contract
+// suite's (tests/bench/planner_contract_test.cpp); here is what is the bidirectional planner's own.
+
+TEST(PmdConnectPlanner, EverySeedSolvesAndTheStatisticsCountTheLiveTrees) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     ConnectToyRun run(toy::withSeed(seed));
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
-    const std::vector<Configuration>& path = run.planner.path();
-    ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
-    EXPECT_EQ(path.front(), toy::start());
-    EXPECT_EQ(path.back(), toy::goal());
-    EXPECT_TRUE(toy::densePathIsFree(path)) << "seed " << seed;
+    EXPECT_TRUE(toy::densePathIsFree(run.planner.path())) << "seed " << seed;
     EXPECT_TRUE(toy::densePathIsFree(run.planner.unsmoothedPath())) << "seed " << seed;
-    for (const Configuration& q : path) EXPECT_TRUE(toy::space().withinLimits(q, 0.0));
 
     const PlanningStatistics& stats = run.planner.statistics();
-    EXPECT_EQ(stats.pathNodes, path.size());
-    EXPECT_LE(stats.pathLength, stats.pathLengthBeforeSmoothing + 1e-12);
     EXPECT_EQ(stats.roadmapNodes, run.planner.tree(0).liveCount() + run.planner.tree(1).liveCount());
     EXPECT_EQ(stats.stateChecks, run.stateValidator.checkCount());
     EXPECT_EQ(stats.motionChecks, run.motionValidator.statesChecked());
@@ -86,29 +81,6 @@ TEST(PmdConnectPlanner, AFreeStraightSegmentIsOneMotionCheckAndNoSample) {
   EXPECT_EQ(run.motionValidator.calls(), 1u);
 }
 
-TEST(PmdConnectPlanner, TheSameSeedGivesTheSamePath) {
-  ConnectToyRun first(toy::withSeed(17));
-  ConnectToyRun second(toy::withSeed(17));
-  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
-  ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
-  EXPECT_EQ(first.planner.path(), second.planner.path());
-  EXPECT_EQ(first.planner.unsmoothedPath(), second.planner.unsmoothedPath());
-  EXPECT_EQ(first.planner.statistics().samples, second.planner.statistics().samples);
-  EXPECT_EQ(first.planner.statistics().stateChecks, second.planner.statistics().stateChecks);
-  EXPECT_EQ(first.planner.statistics().motionChecks, second.planner.statistics().motionChecks);
-  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved) << "solve() again repeats the run";
-  EXPECT_EQ(first.planner.path(), second.planner.path());
-
-  std::set<std::vector<double>> distinct;
-  for (std::uint64_t seed = 20; seed < 25; ++seed) {
-    ConnectToyRun other(toy::withSeed(seed));
-    ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
-    const Configuration& middle = other.planner.unsmoothedPath()[1];
-    distinct.insert(std::vector<double>(middle.data(), middle.data() + middle.size()));
-  }
-  EXPECT_GT(distinct.size(), 1u) << "other seeds sample other nodes";
-}
-
 TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
   PlannerSettings parameters = toy::withSeed(2);
   parameters.maxSamples = 500;
@@ -128,14 +100,6 @@ TEST(PmdConnectPlanner, TheArmRegionGrowsOnlyWhileTheTreesStayApart) {
     const Eigen::VectorXd u = toy::space().normalise(q);
     EXPECT_NEAR(u[1], 0.5, parameters.rhoA + 1e-12) << "the elbow stays in the box around the segment";
   }
-}
-
-TEST(PmdConnectPlanner, ACollidingStartOrGoalIsReported) {
-  const Configuration inWall = toy::fromUnit({0.5, 0.9, 0.3, 0.9, 0.9, 0.5});
-  ConnectToyRun badStart(toy::withSeed(1), toy::Wall{}, inWall, toy::goal());
-  EXPECT_EQ(badStart.planner.solve(), PlannerStatus::InvalidStart);
-  ConnectToyRun badGoal(toy::withSeed(1), toy::Wall{}, toy::start(), inWall);
-  EXPECT_EQ(badGoal.planner.solve(), PlannerStatus::InvalidGoal);
 }
 
 TEST(PmdConnectPlanner, ShortStepsProbesOffAndEverySequenceStillSolve) {

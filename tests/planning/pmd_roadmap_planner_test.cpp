@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -54,24 +53,18 @@ struct ToyRun {
   }
 };
 
-TEST(PmdRoadmapPlanner, SolvesTheNarrowPassage) {
+// What every planner does (a valid path, repeatable runs, statuses, limits, errors) is the contract
+// suite's (tests/bench/planner_contract_test.cpp); here is what is the paper planner's own.
+
+TEST(PmdRoadmapPlanner, StatisticsCountTheRoadmapAndTheDrawsOfAlgorithm4) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     ToyRun run(toy::withSeed(seed));
     ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved) << "seed " << seed;
-    const std::vector<Configuration>& path = run.planner.path();
-    ASSERT_GE(path.size(), 3u) << "the straight segment is blocked, so the path must bend";
-    EXPECT_EQ(path.front(), toy::start());
-    EXPECT_EQ(path.back(), toy::goal());
-    EXPECT_TRUE(toy::densePathIsFree(path)) << "seed " << seed;
     EXPECT_TRUE(toy::densePathIsFree(run.planner.unsmoothedPath())) << "seed " << seed;
-    for (const Configuration& q : path) EXPECT_TRUE(toy::space().withinLimits(q, 0.0));
+    for (const Configuration& q : run.planner.path()) EXPECT_TRUE(toy::space().withinLimits(q, 0.0));
 
     const PlanningStatistics& stats = run.planner.statistics();
-    EXPECT_TRUE(stats.solved());
-    EXPECT_EQ(stats.pathNodes, path.size());
     EXPECT_EQ(stats.pathNodesBeforeSmoothing, run.planner.unsmoothedPath().size());
-    EXPECT_LE(stats.pathLength, stats.pathLengthBeforeSmoothing);
-    EXPECT_NEAR(stats.pathLength, pathLength(path, toy::space()), 1e-12);
     EXPECT_EQ(stats.roadmapNodes, run.planner.roadmap().nodeCount());
     EXPECT_GE(stats.samples, stats.roadmapNodes - 2);
     EXPECT_GE(stats.armTrials, stats.roadmapNodes - 2);
@@ -90,32 +83,6 @@ TEST(PmdRoadmapPlanner, SolvesTheNarrowPassage) {
     }
     EXPECT_EQ(byDimension, stats.roadmapNodes - 2);
   }
-}
-
-TEST(PmdRoadmapPlanner, TheSameSeedGivesTheSamePath) {
-  ToyRun first(toy::withSeed(17));
-  ToyRun second(toy::withSeed(17));
-  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
-  ASSERT_EQ(second.planner.solve(), PlannerStatus::Solved);
-  EXPECT_EQ(first.planner.path(), second.planner.path());
-  EXPECT_EQ(first.planner.unsmoothedPath(), second.planner.unsmoothedPath());
-  const PlanningStatistics& a = first.planner.statistics();
-  const PlanningStatistics& b = second.planner.statistics();
-  EXPECT_EQ(a.samples, b.samples);
-  EXPECT_EQ(a.armTrials, b.armTrials);
-  EXPECT_EQ(a.roadmapNodes, b.roadmapNodes);
-  EXPECT_EQ(a.roadmapEdges, b.roadmapEdges);
-  EXPECT_EQ(a.nodesByHandDimension, b.nodesByHandDimension);
-  EXPECT_EQ(a.stateChecks, b.stateChecks);
-  EXPECT_EQ(a.motionChecks, b.motionChecks);
-
-  // solve() again on the same planner repeats the run from the seed.
-  ASSERT_EQ(first.planner.solve(), PlannerStatus::Solved);
-  EXPECT_EQ(first.planner.path(), second.planner.path());
-
-  ToyRun other(toy::withSeed(18));
-  ASSERT_EQ(other.planner.solve(), PlannerStatus::Solved);
-  EXPECT_NE(other.planner.unsmoothedPath(), first.planner.unsmoothedPath());
 }
 
 TEST(PmdRoadmapPlanner, AProgressCallbackOnlyObserves) {
@@ -304,42 +271,11 @@ TEST(PmdRoadmapPlanner, ANarrowSearchRangeIsPassedOverAgainBeforeRhoGrows) {
   }
 }
 
-TEST(PmdRoadmapPlanner, ARunThatCannotSucceedStopsAtTheTimeLimit) {
-  PlannerSettings parameters = toy::withSeed(3);
-  parameters.maxSamples = std::numeric_limits<std::size_t>::max();
-  parameters.timeLimit = 0.2;
-  ToyRun run(parameters, HandSamplingMode::Synergy, toy::Wall{false});
-  const auto began = std::chrono::steady_clock::now();
-  EXPECT_EQ(run.planner.solve(), PlannerStatus::TimeLimit);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  EXPECT_GE(run.planner.statistics().planningTime, 0.2);
-  EXPECT_LT(seconds, 10.0) << "the limit must actually stop the run";
-}
-
-TEST(PmdRoadmapPlanner, StartOrGoalInCollisionIsReported) {
-  ToyRun run(toy::withSeed(1));
-  run.planner.setStartAndGoal(toy::fromUnit({0.5, 0.9, 0.3, 0.8, 0.8, 0.5}), toy::goal());
-  EXPECT_EQ(run.planner.solve(), PlannerStatus::InvalidStart);
-  run.planner.setStartAndGoal(toy::start(), toy::fromUnit({0.5, 0.9, 0.3, 0.8, 0.8, 0.5}));
-  EXPECT_EQ(run.planner.solve(), PlannerStatus::InvalidGoal);
-  EXPECT_EQ(run.planner.statistics().status, PlannerStatus::InvalidGoal);
-}
-
 TEST(PmdRoadmapPlanner, StartEqualToGoalIsATwoPointPath) {
   ToyRun run(toy::withSeed(1));
   run.planner.setStartAndGoal(toy::start(), toy::start());
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   EXPECT_EQ(run.planner.path(), (std::vector<Configuration>{toy::start(), toy::start()}));
-}
-
-TEST(PmdRoadmapPlanner, SetupRejectsMalformedProblems) {
-  ToyRun run(toy::withSeed(1));
-  run.planner.setStartAndGoal(Eigen::VectorXd::Zero(3), toy::goal());
-  EXPECT_THROW(run.planner.setup(), std::invalid_argument);
-  Configuration outside = toy::start();
-  outside[0] = 5.0;
-  run.planner.setStartAndGoal(outside, toy::goal());
-  EXPECT_THROW(run.planner.solve(), std::invalid_argument);
 }
 
 // The threshold bounds every edge: no roadmap edge is longer than factor · d(c_ini, c_goal),
@@ -357,18 +293,19 @@ TEST(PmdRoadmapPlanner, EdgesRespectTheNeighbourThreshold) {
         const NodeIndex b = edge.target;
         const bool forced = (a == 0 && roadmap.node(b).step == 0.0) || (b == 0 && roadmap.node(a).step == 0.0) ||
                             (a == 1 && roadmap.node(b).step == 1.0) || (b == 1 && roadmap.node(a).step == 1.0);
-        if (!forced) EXPECT_LE(edge.length, threshold) << "factor " << factor;
+        if (!forced) {
+          EXPECT_LE(edge.length, threshold) << "factor " << factor;
+        }
       }
   }
 }
 
-TEST(PmdRoadmapPlanner, ClearDropsTheRun) {
+TEST(PmdRoadmapPlanner, ClearDropsTheRoadmap) {
   ToyRun run(toy::withSeed(2));
   ASSERT_EQ(run.planner.solve(), PlannerStatus::Solved);
   run.planner.clear();
-  EXPECT_TRUE(run.planner.path().empty());
   EXPECT_EQ(run.planner.roadmap().nodeCount(), 0u);
-  EXPECT_EQ(run.planner.statistics().status, PlannerStatus::NotRun);
+  EXPECT_TRUE(run.planner.unsmoothedPath().empty());
 }
 
 }  // namespace

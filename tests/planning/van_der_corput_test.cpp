@@ -51,7 +51,9 @@ TEST(SegmentIntervals, IsTheSmallestPowerOfTwoWithSpacingAtMostRho) {
       const std::size_t n = segmentIntervals(length, rho);
       EXPECT_EQ(n & (n - 1), 0u) << n << " is not a power of two";
       EXPECT_LE(length / static_cast<double>(n), rho) << "length " << length << " rho " << rho;
-      if (n > 1) EXPECT_GT(length / static_cast<double>(n / 2), rho) << "not the smallest";
+      if (n > 1) {
+        EXPECT_GT(length / static_cast<double>(n / 2), rho) << "not the smallest";
+      }
     }
   }
   EXPECT_EQ(segmentIntervals(0.8, 0.001), 1024u);

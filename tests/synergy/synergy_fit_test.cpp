@@ -82,7 +82,9 @@ TEST(SynergyFit, DirectionsAreOrthonormalOrderedAndSignFixed) {
     Eigen::Index largest = 0;
     d.col(k).cwiseAbs().maxCoeff(&largest);
     EXPECT_GT(d(largest, k), 0) << "direction " << k + 1;
-    if (k > 0) EXPECT_GE(fit.model.sigma(k - 1), fit.model.sigma(k));
+    if (k > 0) {
+      EXPECT_GE(fit.model.sigma(k - 1), fit.model.sigma(k));
+    }
   }
 }
 

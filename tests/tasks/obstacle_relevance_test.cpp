@@ -128,9 +128,10 @@ TEST_P(ObstacleRelevance, RemovingAnyObjectChangesASeededPlan) {
       int changed = 0;
       for (std::size_t s = 0; s < seeds.size(); ++s) changed += !(plan(reduced, model, seeds[s], factor) == full[s]);
       const bool listed = kNotYetRelevant.count(task.name + "/" + joined(object)) > 0;
-      if (!listed && factor == 1.0)
+      if (!listed && factor == 1.0) {
         EXPECT_GT(changed, 0) << task.name << " without " << joined(object) << ", radius factor " << factor
                               << ": every seed plans as with it";
+      }
       std::printf("%s without %s, radius factor %.0f: %d of %zu seeds change%s\n", task.name.c_str(),
                   joined(object).c_str(), factor, changed, seeds.size(),
                   listed ? (changed ? " (listed as not yet relevant: it now matters)" : " (not yet relevant)") : "");

@@ -22,7 +22,7 @@ namespace {
 // several times, and the Release suite covers the seeds.
 constexpr int kSeeds = test::trials(5, 1);
 
-using TaskAndPlanner = std::tuple<std::string, RoadmapAlgorithm>;
+using TaskAndPlanner = std::tuple<std::string, std::string>;  // task, planner
 
 class OurPlannerOnTask : public ::testing::TestWithParam<TaskAndPlanner> {
  protected:
@@ -34,7 +34,7 @@ class OurPlannerOnTask : public ::testing::TestWithParam<TaskAndPlanner> {
 
   TaskPlanningResult plan(std::uint64_t seed) {
     TaskPlanningSettings options;
-    options.algorithm = std::get<1>(GetParam());
+    options.planner = &ourPlanners().at(std::get<1>(GetParam()));
     options.parameters.seed = seed;
     options.parameters.timeLimit = 60.0;
     options.synergies = &model_;
@@ -72,13 +72,13 @@ TEST_P(OurPlannerOnTask, TheSameSeedGivesTheSamePath) {
 }
 
 std::string testName(const ::testing::TestParamInfo<TaskAndPlanner>& info) {
-  return std::get<0>(info.param) + (std::get<1>(info.param) == RoadmapAlgorithm::Lazy ? "_lazy" : "_connect");
+  return std::get<0>(info.param) + (std::get<1>(info.param) == "pmd-lazy" ? "_lazy" : "_connect");
 }
 
 INSTANTIATE_TEST_SUITE_P(BuiltInTasks, OurPlannerOnTask,
                          ::testing::Combine(::testing::Values("can_on_table", "cans_on_desk", "can_in_box",
                                                               "cans_in_shelf", "t_in_clutter", "allegro_can_on_table"),
-                                            ::testing::Values(RoadmapAlgorithm::Lazy, RoadmapAlgorithm::Connect)),
+                                            ::testing::Values("pmd-lazy", "pmd-connect")),
                          testName);
 
 }  // namespace

@@ -30,7 +30,7 @@ TEST(PaperClaim, TheFullSpaceNeedsFiveTimesTheSamplesAndNodesOfPmdOnTask0) {
   CollisionChecking checking(task, CheckerKind::Fast);
   const auto plan = [&](HandSamplingMode mode, int seed, std::size_t maxSamples) {
     TaskPlanningSettings options;
-    options.mode = mode;
+    options.planner = &ourPlanners().at(handSamplingModeName(mode));
     options.parameters = PlannerSettings::defaultsFor(mode);
     options.parameters.seed = static_cast<std::uint64_t>(seed);
     options.parameters.timeLimit = std::numeric_limits<double>::infinity();  // only N bounds a run: no timing

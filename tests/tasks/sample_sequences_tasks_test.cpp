@@ -19,12 +19,12 @@ namespace {
 
 constexpr int kSequenceSeeds = test::trials(3, 1);  // one seed in the sanitizer build
 
-using Case = std::tuple<std::string, RoadmapAlgorithm, SampleSequence>;
+using Case = std::tuple<std::string, std::string, SampleSequence>;  // task, planner, sequence
 class SequenceOnTask : public ::testing::TestWithParam<Case> {};
 
 TaskPlanningResult plan(const Task& task, CollisionChecking& checking, const SynergyModel& model, std::uint64_t seed) {
   TaskPlanningSettings options;
-  options.algorithm = std::get<1>(SequenceOnTask::GetParam());
+  options.planner = &ourPlanners().at(std::get<1>(SequenceOnTask::GetParam()));
   options.parameters.sequence = std::get<2>(SequenceOnTask::GetParam());
   options.parameters.seed = seed;
   options.parameters.timeLimit = 60.0;
@@ -52,13 +52,13 @@ TEST_P(SequenceOnTask, EverySeedSolvesWithAValidPathAndRepeatsItself) {
 }
 
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
-  return std::get<0>(info.param) + "_" + (std::get<1>(info.param) == RoadmapAlgorithm::Lazy ? "lazy" : "pmd") + "_" +
+  return std::get<0>(info.param) + "_" + (std::get<1>(info.param) == "pmd-lazy" ? "lazy" : "pmd") + "_" +
          sampleSequenceName(std::get<2>(info.param));
 }
 
 INSTANTIATE_TEST_SUITE_P(HaltonAndSdk, SequenceOnTask,
                          ::testing::Combine(::testing::Values("can_on_table", "can_in_box"),
-                                            ::testing::Values(RoadmapAlgorithm::Paper, RoadmapAlgorithm::Lazy),
+                                            ::testing::Values("pmd", "pmd-lazy"),
                                             ::testing::Values(SampleSequence::Halton, SampleSequence::Sdk)),
                          caseName);
 

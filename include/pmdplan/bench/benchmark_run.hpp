@@ -1,12 +1,11 @@
 #pragma once
-// One benchmark run: plan with the chosen planner, smooth, validate, measure.
+// One benchmark run: plan with the chosen planner through the one service `plan` uses
+// (planning/task_planning.hpp: planTask), validate, measure.
 //
-// Smoothing: our planners smooth inside solve() (Sect. 5.3). An OMPL planner's path gets the very
-// same smoothing afterwards: smoothPath over all of the path's states with the same
-// MotionValidator, timed as its smoothing time; OMPL's own simplifier is not used.
+// Smoothing: every planner smooths inside solve() (Sect. 5.3); an OMPL planner's path gets the very
+// same smoothing (ompl_planner.hpp), OMPL's own simplifier is not used.
 // Grasp goals (docs/grasp_goals.md): every planner plans the approach to the pre-grasp as `plan`
-// does (task_planning.hpp: taskApproach, appendClosing), an OMPL planner's smoothed approach then
-// ends with the closing segment.
+// does, the smoothed approach then ends with the closing segment.
 // Validation: every returned path, ours too, is checked again by the grasp rule
 // (GraspRule::validatePath, its phases honoured) on a separate exact checker at the same
 // tolerance; an invalid path is a failure, never a success.
@@ -22,10 +21,10 @@
 
 namespace pmdplan {
 
-/// Runs planner `planner` once (run number `run`) with the settings `parameters`: all of them for
-/// our planners, only the seed and the time limit for OMPL's. An OMPL planner sets OMPL's
-/// process-wide seed, so call this in a fresh process per run (forked_run.hpp). A solved run's
-/// smoothed path is put in `path` when it is not null (untouched otherwise).
+/// Runs planner `planner` once (run number `run`) with the settings `parameters` (those the planner
+/// honours: PlannerFamily). An OMPL planner sets OMPL's process-wide seed, so call this in a fresh
+/// process per run (forked_run.hpp). A solved run's path is put in `path` when it is not null
+/// (untouched otherwise).
 RunRecord runPlannerOnce(TaskBench& bench, const PlannerEntry& planner, int run, const PlannerSettings& parameters,
                          PathFile* path = nullptr);
 

@@ -3,18 +3,20 @@
 // [0, 1]^n, whose states are checked by our StateValidator and whose motions by our
 // MotionValidator (the same checks, at the same tolerance, as the PMD planner), stopped by a
 // wall-clock limit. Planner settings are OMPL's defaults. OMPL types stay inside the .cpp.
+// OmplPlanner (ompl_planner.hpp) runs it behind the Planner interface.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "pmdplan/collision/motion_validator.hpp"
 #include "pmdplan/collision/state_validator.hpp"
 #include "pmdplan/model/configuration.hpp"
+#include "pmdplan/planning/hand_sampler.hpp"
 #include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planning_space.hpp"
-#include "pmdplan/planning/synergy_hand_sampler.hpp"
-#include "pmdplan/synergy/synergy_model.hpp"
+#include "pmdplan/planning/planning_statistics.hpp"
 
 namespace pmdplan {
 
@@ -23,6 +25,9 @@ struct OmplPlanningResult {
   bool solved = false;
   /// OMPL's status text ("Exact solution", "Timeout", ...).
   std::string status;
+  /// OMPL's status as ours: Solved, InvalidStart, InvalidGoal, else (a timeout, an approximate
+  /// solution) TimeLimit.
+  PlannerStatus plannerStatus = PlannerStatus::NotRun;
   /// The solution's states (start and goal exactly the given ones); empty unless solved.
   std::vector<Configuration> path;
   /// Seconds of setup() and solve().
@@ -35,14 +40,26 @@ struct OmplPlanningResult {
   std::size_t graphStates = 0;
 };
 
-/// True for the names ompl_planning knows ("RRTConnect", "PRM", "LazyPRM", "KPIECE1", "BKPIECE1",
-/// "EST", "RRT").
+/// One of OMPL's planners we run.
+struct OmplPlannerKind {
+  std::string name;  ///< OMPL's: "RRTConnect"
+  std::string description;
+  /// The same seed gives the same run (PlannerEntry::repeatable).
+  bool repeatable = true;
+};
+
+/// Every OMPL planner ompl_planning runs, in the order the roster lists them: RRTConnect, PRM,
+/// LazyPRM, KPIECE1, BKPIECE1, EST, RRT.
+std::vector<OmplPlannerKind> omplPlannerKinds();
+
+/// True for the names of omplPlannerKinds().
 bool isOmplPlannerName(const std::string& name);
 
 /// PMD sampling for OMPL's planners (the `@pmd` suffix): every planner's states are drawn by
 /// OmplPmdStateSampler (src/bench/ompl_pmd_state_sampler.hpp) from this model and arm region.
 struct OmplPmdSampling {
-  const SynergyModel* synergies = nullptr;
+  /// The PMD hand sampler (makeHandSampler of the Synergy mode).
+  std::shared_ptr<const HandSampler> hands;
   /// Of these: the PMD box, rho_a, the arm region's growth (connect-arm-growth, connect-round) and
   /// the sequence.
   PlannerSettings parameters;

@@ -8,12 +8,13 @@
 // space information's validity checker, segments with its motion validator. The start is the
 // problem's first start state, the goal one sample of its (sampleable) goal region.
 //
-// Settings are OMPL parameters (declareParam), named like the Python PlannerSettings:
-// initial_arm_half_size, linear_arm_box_growth, neighbour_count, neighbour_threshold_factor,
-// arm_trials, hand_trials, min_sweep_visits, max_samples, smooth and seed. The termination
-// condition takes the place of the time limit: it is tested before every hypercube. seed 0 (the
-// default) draws each run's seed from an ompl::RNG, so ompl::RNG::setSeed makes runs repeatable
-// and repeated runs differ, as with OMPL's planners; any other seed repeats that run.
+// Every row of plannerSettingTable() (planning/planner_setting_table.hpp) is an OMPL parameter,
+// named like the Python PlannerSettings' property (rho_a, neighbours, neighbour_threshold, ...,
+// connect_probes) and taking the command line's text ("0.01", "linear", "on"); the rows of the
+// other PMD planners (lazy_*, connect_*) are accepted and unused here. The termination condition
+// bounds the run besides time_limit (infinite by default): it is tested before every hypercube.
+// seed 0 (the default) draws each run's seed from an ompl::RNG, so ompl::RNG::setSeed makes runs
+// repeatable and repeated runs differ, as with OMPL's planners; any other seed repeats that run.
 //
 // Deviation: OMPL has no arm-only self-collision check, so Algorithm 1's SELFCOLLISION(c^a)
 // filter passes every arm sample here and the full check of the hand-arm sample decides alone

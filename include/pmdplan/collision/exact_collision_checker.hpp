@@ -50,6 +50,8 @@ class ExactCollisionChecker : public StateValidator {
   std::optional<Clearance> clearance(const Configuration& q, const std::optional<std::string>& obstacleName = {});
 
   const RobotModel& model() const { return model_; }
+  /// The task it was built on.
+  const Task& task() const { return task_; }
   const ForwardKinematics& kinematics() const { return kinematics_; }
 
   // Pair-level access for checkers that confirm only some pairs (the fast checker): the exact

@@ -1,5 +1,5 @@
 #pragma once
-// The hand-arm sampling of both PMD planners for one arm hypercube B^a(step): up to n_A arm
+// The hand-arm sampling of the three PMD planners for one arm hypercube B^a(step): up to n_A arm
 // configurations (Algorithm 1, one trial each), each with up to n_H hand configurations
 // (Algorithm 2, one trial each), the hand dimension growing by one per failed hand sample. A
 // sample is one hand-arm draw (Table 2's count); N bounds the samples and, so that an arm that never
@@ -12,8 +12,8 @@
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
-#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planner_run.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
 

@@ -24,7 +24,6 @@ std::optional<HandSamplingMode> parseHandSamplingMode(const std::string& name);
 /// The hand sampler of a mode. Synergy needs `model` (std::invalid_argument if null); FullSpace
 /// ignores it.
 std::unique_ptr<HandSampler> makeHandSampler(HandSamplingMode mode, const PlanningSpace& space,
-                                             const SynergyModel* model,
-                                             const SynergySamplingSettings& parameters = {});
+                                             const SynergyModel* model, const SynergySamplingSettings& parameters = {});
 
 }  // namespace pmdplan

@@ -7,10 +7,12 @@
 // states of every unknown edge, then the full motion checks, the longest edge first. A blocked
 // edge is dropped and the search repeated; when no path is left, a new batch of samples is drawn
 // with rho_a grown. The first candidate is the straight segment from c_ini to c_goal.
-// Shaped like PmdRoadmapPlanner: construct, setStartAndGoal, solve, read path() and statistics().
+// A Planner (planner.hpp), registered as `pmd-lazy` (planner_registry.hpp): construct,
+// setStartAndGoal, solve, read path() and statistics().
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "pmdplan/planning/lazy_roadmap.hpp"
 #include "pmdplan/planning/pmd_planner_base.hpp"
@@ -25,11 +27,12 @@ class LazyPmdPlanner : public PmdPlannerBase {
   LazyPmdPlanner(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
                  std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters = {});
 
+  std::string name() const override { return "pmd-lazy"; }
   /// Throws InputError for bad parameters, std::invalid_argument for a malformed space or problem.
-  void setup();
+  void setup() override;
   /// One run from the seed, from an empty roadmap.
-  PlannerStatus solve();
-  void clear();
+  PlannerStatus solve() override;
+  void clear() override;
 
   const LazyRoadmap& roadmap() const { return roadmap_; }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The settings of the lazy PMD planner (lazy_pmd_planner.hpp) that the paper's planner does not
 // have. The ones both share (rho_a, kappa, max-pmds, n_H, time limit, seed, smoothing) stay in
-// PlannerSettings; these live there as its `lazy` field, so the command line reaches them
+// PlannerSettings; these live there as its `lazy` field, so every front end reaches them
 // through planner_setting_table.hpp like every other setting.
 #include <cstddef>
 
@@ -24,8 +24,8 @@ struct LazyPmdSettings {
   /// rho_a is multiplied by this after every round that found no path, capped at 1. Default 2.
   double armGrowth = 2.0;
 
-  /// Throws InputError (no file; field the command-line flag without dashes: "lazy-batch", ...)
-  /// for values out of range.
+  /// Throws InputError (no file; field the setting's key in planner_setting_table.hpp: "lazy-batch",
+  /// ...) for values out of range.
   void check() const;
 };
 

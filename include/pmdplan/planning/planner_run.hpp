@@ -1,7 +1,7 @@
 #pragma once
-// What one run of a PMD planner (PmdRoadmapPlanner, LazyPmdPlanner) keeps besides its roadmap: the
-// problem check before it, the clock and the deadline during it, and the statistics it closes with
-// (the smoothed path's size and lengths, the times, the motion checks).
+// What one run of a PMD planner (PmdRoadmapPlanner, LazyPmdPlanner, PmdConnectPlanner) keeps
+// besides its roadmap: the problem check before it, the clock and the deadline during it, and the
+// statistics it closes with (the smoothed path's size and lengths, the times, the motion checks).
 #include <chrono>
 #include <cstddef>
 #include <optional>

@@ -1,8 +1,8 @@
 #pragma once
 // Every setting of the PMD roadmap planner (Algorithm 4) and of its hand samplers, in one place.
 // Defaults are the paper's (Table 3, Sect. 5); where the paper is silent or its value is
-// unworkable the deviation is stated at the field and in docs/deviations.md. The command line
-// reaches every field through planner_setting_table.hpp (same flag names in `plan` and `bench`).
+// unworkable the deviation is stated at the field and in docs/deviations.md. Every front end (the
+// command line, Python, OMPL's parameters) reaches every field through planner_setting_table.hpp.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -90,8 +90,8 @@ struct PlannerSettings {
   /// The paper's values for a mode (preset Paper).
   static PlannerSettings defaultsFor(HandSamplingMode mode) { return preset(PlannerPreset::Paper, mode); }
 
-  /// Throws InputError (no file; the field named as the command-line flag without dashes, from
-  /// planner_setting_table.hpp: "rho-a", "neighbours", ...) for values out of range.
+  /// Throws InputError (no file; the field named by the setting's key in planner_setting_table.hpp:
+  /// "rho-a", "neighbours", ..., which each front end spells its way) for values out of range.
   void check() const;
 };
 

@@ -17,11 +17,13 @@
 // sample has joined both trees: then the path through them is certified, its unchecked steps
 // longest first, and a blocked step cuts its node off its tree with everything below it.
 //
-// The first candidate is the straight segment from c_ini to c_goal. Shaped like the other PMD
-// planners: construct, setStartAndGoal, solve, read path() and statistics().
+// The first candidate is the straight segment from c_ini to c_goal. A Planner (planner.hpp),
+// registered as `pmd-connect` (planner_registry.hpp): construct, setStartAndGoal, solve, read
+// path() and statistics().
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "pmdplan/planning/connect_tree.hpp"
@@ -40,11 +42,12 @@ class PmdConnectPlanner : public PmdPlannerBase {
   PmdConnectPlanner(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
                     std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters = {});
 
+  std::string name() const override { return "pmd-connect"; }
   /// Throws InputError for bad parameters, std::invalid_argument for a malformed space or problem.
-  void setup();
+  void setup() override;
   /// One run from the seed, from two trees of their roots only.
-  PlannerStatus solve();
-  void clear();
+  PlannerStatus solve() override;
+  void clear() override;
 
   /// The tree rooted at c_ini (kStartTree) or at c_goal (kGoalTree).
   const ConnectTree& tree(std::size_t which) const { return trees_.at(which); }

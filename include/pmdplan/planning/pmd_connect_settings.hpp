@@ -1,8 +1,8 @@
 #pragma once
 // The settings of the bidirectional PMD planner (pmd_connect_planner.hpp) that the other PMD
 // planners do not have. Shared ones (rho_a, n_A, n_H, kappa, max-pmds, N, time limit, seed,
-// sequence, smoothing) stay in PlannerSettings; these live there as its `connect` field, so the
-// command line reaches them through planner_setting_table.hpp like every other setting. The
+// sequence, smoothing) stay in PlannerSettings; these live there as its `connect` field, so
+// every front end reaches them through planner_setting_table.hpp like every other setting. The
 // defaults were chosen by measurement on the built-in tasks (docs/planners.md).
 #include <cstddef>
 
@@ -25,8 +25,8 @@ struct PmdConnectSettings {
   /// as in Bohlin & Kavraki's Lazy PRM). 0: none. Default 4.
   std::size_t probes = 4;
 
-  /// Throws InputError (no file; field the command-line flag without dashes: "connect-range", ...)
-  /// for values out of range.
+  /// Throws InputError (no file; field the setting's key in planner_setting_table.hpp: "connect-range",
+  /// ...) for values out of range.
   void check() const;
 };
 

@@ -1,9 +1,10 @@
 #pragma once
-// What both PMD planners (PmdRoadmapPlanner, the paper's; LazyPmdPlanner, ours) share, as OMPL's
-// base::Planner does for its planners: the problem (the space, the borrowed validators, the hand
-// sampler, the parameters, c_ini and c_goal with the arm sampler along their segment), one run's
-// random source and clock, and its results (the path before and after smoothing, the statistics).
-// A planner adds its roadmap and its solve().
+// What the three PMD planners (PmdRoadmapPlanner, the paper's; LazyPmdPlanner and PmdConnectPlanner,
+// ours) share, as OMPL's base::Planner does for its planners: their implementation of the Planner
+// interface (planner.hpp) up to setup, solve and clear: the problem (the space, the borrowed
+// validators, the hand sampler, the parameters, c_ini and c_goal with the arm sampler along their
+// segment), one run's random source and clock, and its results (the path before and after
+// smoothing, the statistics). A planner adds its roadmap or trees, setup(), solve() and clear().
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -16,26 +17,24 @@
 #include "pmdplan/model/configuration.hpp"
 #include "pmdplan/planning/arm_segment_sampler.hpp"
 #include "pmdplan/planning/hand_sampler.hpp"
-#include "pmdplan/planning/planner_settings.hpp"
+#include "pmdplan/planning/planner.hpp"
 #include "pmdplan/planning/planner_run.hpp"
+#include "pmdplan/planning/planner_settings.hpp"
 #include "pmdplan/planning/planning_space.hpp"
 #include "pmdplan/planning/planning_statistics.hpp"
 
 namespace pmdplan {
 
-class PmdPlannerBase {
+class PmdPlannerBase : public Planner {
  public:
-  PmdPlannerBase(const PmdPlannerBase&) = delete;
-  PmdPlannerBase& operator=(const PmdPlannerBase&) = delete;
-
   /// c_ini and c_goal: full configurations within the limits. They need not lie in the PMD subspace.
-  void setStartAndGoal(Configuration start, Configuration goal);
+  void setStartAndGoal(Configuration start, Configuration goal) override;
 
   /// The smoothed path (c_ini first, c_goal last); empty unless solved.
-  const std::vector<Configuration>& path() const { return path_; }
+  const std::vector<Configuration>& path() const override { return path_; }
   /// The path the search found, before smoothing.
   const std::vector<Configuration>& unsmoothedPath() const { return unsmoothedPath_; }
-  const PlanningStatistics& statistics() const { return statistics_; }
+  const PlanningStatistics& statistics() const override { return statistics_; }
   const PlanningSpace& space() const { return space_; }
   const PlannerSettings& parameters() const { return parameters_; }
   const HandSampler& handSampler() const { return *handSampler_; }
@@ -44,7 +43,6 @@ class PmdPlannerBase {
   /// The validators are borrowed and must outlive the planner; `name` heads its error messages.
   PmdPlannerBase(PlanningSpace space, StateValidator& stateValidator, MotionValidator& motionValidator,
                  std::unique_ptr<HandSampler> handSampler, PlannerSettings parameters, std::string name);
-  ~PmdPlannerBase() = default;
 
   /// Checks the parameters, the space and the problem and places the arm sampler on the segment.
   /// Throws InputError for bad parameters, std::invalid_argument for a malformed space or problem.

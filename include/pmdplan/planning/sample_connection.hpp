@@ -17,7 +17,7 @@ std::vector<NodeIndex> findNeighbours(const Roadmap& roadmap, NodeIndex node, st
 
 struct ConnectionRule {
   std::size_t neighbours = 10;  ///< K
-  double threshold = 0.0;           ///< neighbouring threshold, d(c_ini, c_goal)
+  double threshold = 0.0;       ///< neighbouring threshold, d(c_ini, c_goal)
 };
 
 /// Algorithm 3 for a node already added. `forcedNeighbour` (c_ini for samples of the first

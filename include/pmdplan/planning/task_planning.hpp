@@ -1,34 +1,28 @@
 #pragma once
-// One planner run on a task: the state and motion checks of the chosen checker, the hand sampler
-// of the chosen mode and the PMD roadmap planner, wired the same way for the CLI and the
-// benchmarks. A goal that grasps the task's target is planned in two phases (grasp_approach.hpp):
-// the roadmap planner's path to the pre-grasp (the approach), then the closing segment to the goal.
-// The lazy and the bidirectional planners are wired the same way; the progress callback is the paper planner's only.
-// taskApproach and appendClosing are the two phases' wiring on their own, for planners of other
-// families (OMPL's, src/bench/) to plan a grasp goal exactly as planTask does.
+// Plan a task with any planner: the one service the CLI (`plan`), the benchmarks (`bench`) and
+// Python (`pmdplan.plan`) share. The planner comes from a registry (planner_registry.hpp: ours; with
+// OMPL's, bench/planner_roster.hpp) and plans on the state and motion checks of the task's
+// CollisionChecking. A goal that grasps the task's target is planned in two phases
+// (grasp_approach.hpp): the planner's path to the pre-grasp (the approach), then the closing
+// segment to the goal. taskApproach and appendClosing are the two phases' wiring on their own.
 #include <optional>
 #include <vector>
 
 #include "pmdplan/collision/collision_checking.hpp"
 #include "pmdplan/planning/grasp_approach.hpp"
 #include "pmdplan/planning/hand_sampling_mode.hpp"
-#include "pmdplan/planning/pmd_roadmap_planner.hpp"
+#include "pmdplan/planning/planner_registry.hpp"
 #include "pmdplan/world/task.hpp"
 
 namespace pmdplan {
 
-/// Which of our planners plans the approach.
-enum class RoadmapAlgorithm {
-  Paper,    ///< the paper's PMD roadmap (pmd_roadmap_planner.hpp): `pmd`, `full`
-  Lazy,     ///< the lazy PMD roadmap (lazy_pmd_planner.hpp): `pmd-lazy`
-  Connect,  ///< the bidirectional PMD trees (pmd_connect_planner.hpp): `pmd-connect`
-};
-
 struct TaskPlanningSettings {
-  RoadmapAlgorithm algorithm = RoadmapAlgorithm::Paper;
-  HandSamplingMode mode = HandSamplingMode::Synergy;
+  /// The planner that plans the approach, an entry of a registry (ourPlanners() or, with OMPL's,
+  /// bench's plannerRoster()), which must outlive the call; nullptr: ours `pmd`.
+  const PlannerEntry* planner = nullptr;
+  /// Its settings; start from PlannerSettings::defaultsFor(planner->mode).
   PlannerSettings parameters = PlannerSettings::defaultsFor(HandSamplingMode::Synergy);
-  const SynergyModel* synergies = nullptr;  ///< required for the Synergy mode
+  const SynergyModel* synergies = nullptr;  ///< required by planners that sample PMDs (usesSynergies)
   GraspSettings grasp;                      ///< how a pre-grasp is derived for a grasp goal
 };
 
@@ -59,10 +53,11 @@ TaskApproach taskApproach(const Task& task, CollisionChecking& checking, const G
 std::optional<std::size_t> appendClosing(const Task& task, const TaskApproach& approach,
                                          std::vector<Configuration>& path);
 
-/// `checking` must have been built for `task`; its tolerance is the motion checks' resolution.
-/// Throws InputError for a model that does not fit the robot's hand (field as the sampler names
-/// it, no file), for bad parameters, and (naming the task file) for a goal that touches anything
-/// but the target with the hand or whose pre-grasp cannot be found.
+/// One run of the chosen planner on the task. `checking` must have been built for `task`; its
+/// tolerance is the motion checks' resolution. `progress` reaches the planner (only the paper
+/// planner reports). Throws InputError for a model that does not fit the robot's hand (field as the
+/// sampler names it, no file), for bad parameters, and (naming the task file) for a goal that
+/// touches anything but the target with the hand or whose pre-grasp cannot be found.
 TaskPlanningResult planTask(const Task& task, CollisionChecking& checking, const TaskPlanningSettings& options,
                             ProgressCallback progress = {});
 

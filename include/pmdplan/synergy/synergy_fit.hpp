@@ -41,7 +41,7 @@ struct SynergyFit {
 /// `postures`: one row per frame, one column per joint of `joints` (rad). Throws InputError naming
 /// the source for an own-axis joint the robot lacks, fewer frames than PCA joints + 1, a posture
 /// outside the limits, and data in which every PCA joint is constant.
-SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints, const SynergyFitSettings& options,
-                           const PostureSource& source);
+SynergyFit fitSynergyModel(const Eigen::MatrixXd& postures, const JointLimits& joints,
+                           const SynergyFitSettings& options, const PostureSource& source);
 
 }  // namespace pmdplan

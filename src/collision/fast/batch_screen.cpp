@@ -1,4 +1,4 @@
-// The batch screen (CheckerState::screenBatch): the geometric stages for kLanes configurations at
+// The batch screen (batch_screen.hpp): the geometric stages for kLanes configurations at
 // once, on lane vectors (lane_vector.hpp) as wide as the running CPU's: all eight lanes in one AVX-512
 // register, or two passes of four (AVX2), or four of two (SSE2). For every pair: the link bounds
 // (a whole subtree of links against an obstacle first); where those meet, the parts' bounding
@@ -6,6 +6,8 @@
 // pair: capsule_capsule.hpp, capsule_box.hpp, ..., cylinder_cylinder.hpp; chosen at setup). Only
 // a lane whose pair none of these proves apart goes on, alone, to the one-configuration tests
 // (linkPairContact / linkObstacleContact, then FCL).
+#include "batch_screen.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -14,9 +16,11 @@
 #include "capsule_box.hpp"
 #include "capsule_capsule.hpp"
 #include "capsule_cylinder.hpp"
-#include "checker_state.hpp"
+#include "checker_model.hpp"
+#include "checker_scratch.hpp"
 #include "cylinder_cylinder.hpp"
 #include "lane_parts.hpp"
+#include "narrow_phase.hpp"
 #include "sphere_box.hpp"
 #include "sphere_capsule.hpp"
 #include "sphere_cylinder.hpp"
@@ -24,9 +28,9 @@
 namespace pmdplan::fast {
 namespace {
 
-constexpr int kValues = BatchedForwardKinematics::kPoseValues;
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-using PairKind = CheckerState::PartPairKind;
+constexpr int kBatchValues = BatchedForwardKinematics::kPoseValues;
+constexpr double kBatchInfinity = std::numeric_limits<double>::infinity();
+using PairKind = PartPairKind;
 
 /// The kernel of part pairs of kind K other than two capsules: a lower bound on the gap between
 /// the placed parts a and b.
@@ -46,23 +50,26 @@ template <PairKind K, class V>
 }
 
 /// The gaps of the part pairs of kind K whose bounding spheres meet (the first `count` of
-/// partWork_'s list for K), by K's kernel, in lanes first .. first + width(V) - 1: into
-/// partPairGaps_, over the bounding spheres' gap there (two capsules' replaces it; it is exact).
+/// BatchScratch::partWork's list for K), by K's kernel, in lanes first .. first + width(V) - 1: into
+/// BatchScratch::partPairGaps, over the bounding spheres' gap there (two capsules' replaces it; it
+/// is exact).
 template <PairKind K, class V>
-[[gnu::always_inline]] inline void partPairGaps(CheckerState& state, std::uint32_t count, int first, bool tight) {
-  const std::uint32_t* work = state.partWork_.data() + state.partWorkBegin_[static_cast<int>(K)];
-  const double* placed = state.partLanes_.data() + first;
+[[gnu::always_inline]] inline void partPairGaps(const CheckerModel& model, BatchScratch& scratch, std::uint32_t count,
+                                                int first, bool tight) {
+  const PartPairTable& table = model.partPairs();
+  const std::uint32_t* work = scratch.partWork.data() + table.kindBegin[static_cast<int>(K)];
+  const double* placed = scratch.partLanes.data() + first;
   for (std::uint32_t w = 0; w < count; ++w) {
     const std::uint32_t k = work[w];
-    const CheckerState::PartPair& pp = state.partPairs_[k];
-    const ConvexPart &sa = state.partShapes_[pp.indexA], &sb = state.partShapes_[pp.indexB];
+    const PartPair& pp = table.pairs[k];
+    const ConvexPart &sa = table.shapes[pp.indexA], &sb = table.shapes[pp.indexB];
     const double* a = placed + static_cast<std::size_t>(pp.indexA) * kPartValues * L;
     const double* b = placed + static_cast<std::size_t>(pp.indexB) * kPartValues * L;
-    double* g = state.partPairGaps_.data() + first + static_cast<std::size_t>(k) * L;
+    double* g = scratch.partPairGaps.data() + first + static_cast<std::size_t>(k) * L;
     if constexpr (K == PairKind::CapsuleCapsule)
       lanes::store(g, capsuleCapsuleGap<V>(sa, a, pp.inverseA, sb, b, pp.inverseB));
     else
-      lanes::store(g, lanes::max(lanes::load<V>(g), solidPairGap<K, V>(sa, a, sb, b, state.band_, tight)));
+      lanes::store(g, lanes::max(lanes::load<V>(g), solidPairGap<K, V>(sa, a, sb, b, model.band(), tight)));
   }
 }
 
@@ -77,34 +84,36 @@ template <ConvexPart::Kind K, class V>
     return sphereCylinderGap(obstacle, c, r);
 }
 
-}  // namespace
-
 // Obstacle o (of kind K) against every moving link's bound, a whole subtree at a time where its
 // sphere is clear of the obstacle: the sphere around a link's bound centre that holds its
-// descendants' bounds (subtreeLanes_, radius grown by a relative 1e-12 against rounding).
+// descendants' bounds (BatchScratch::subtreeLanes, radius grown by a relative 1e-12 against
+// rounding).
 template <ConvexPart::Kind K, class V>
-[[gnu::always_inline]] inline void CheckerState::screenObstacleOf(std::size_t o, int first, bool tight) {
+[[gnu::always_inline]] inline void screenObstacleOf(const CheckerModel& model, BatchScratch& scratch, std::size_t o,
+                                                    int first, bool tight) {
   using lanes::load;
   using lanes::store;
-  const std::size_t selfCount = selfPairs_.size(), linkCount = geometricLinks_.size();
-  const ConvexPart& obstacle = obstacles_[o].part;
-  const double* subtree = subtreeLanes_.data() + first;
-  double* obstacleGaps = pairLaneGaps_.data() + first + (selfCount + o * linkCount) * L;
-  char* obstacleNear = pairNear_.data() + selfCount + o * linkCount;
+  const GeometricLinks& geometric = model.geometricLinks();
+  const double band = model.band();
+  const std::size_t selfCount = model.selfPairs().size(), linkCount = geometric.size();
+  const ConvexPart& obstacle = model.obstacles()[o].part;
+  const double* subtree = scratch.subtreeLanes.data() + first;
+  double* obstacleGaps = scratch.pairLaneGaps.data() + first + (selfCount + o * linkCount) * L;
+  char* obstacleNear = scratch.pairNear.data() + selfCount + o * linkCount;
   for (std::size_t i = 0; i < linkCount;) {
-    const auto end = static_cast<std::size_t>(geometricSubtreeEnd_[i]);
+    const auto end = static_cast<std::size_t>(geometric.subtreeEnd[i]);
     const Point<V> centre =
-        pointAt<V>(boundLanes_.data() + static_cast<std::size_t>(geometricLinks_[i]) * 3 * L + first);
+        pointAt<V>(scratch.boundLanes.data() + static_cast<std::size_t>(geometric.links[i]) * 3 * L + first);
     if (!tight && end > i + 1) {
       const V whole = sphereGap<K>(obstacle, centre, load<V>(subtree + i * L) * (1.0 + 1e-12));
-      if (!(lanes::lowest(whole) <= band_)) {
+      if (!(lanes::lowest(whole) <= band)) {
         for (; i < end; ++i) store(obstacleGaps + i * L, whole), obstacleNear[i] = 0;
         continue;
       }
     }
-    const V gap = sphereGap<K>(obstacle, centre, lanes::splat<V>(geometricBoundR_[i]));
+    const V gap = sphereGap<K>(obstacle, centre, lanes::splat<V>(geometric.boundRadius[i]));
     store(obstacleGaps + i * L, gap);
-    obstacleNear[i] = lanes::lowest(gap) <= band_;
+    obstacleNear[i] = lanes::lowest(gap) <= band;
     ++i;
   }
 }
@@ -113,35 +122,43 @@ template <ConvexPart::Kind K, class V>
 // long loops: (1) every pair's bounds; (2) for the pairs whose bounds meet in some lane, their links
 // placed, every part pair's bounding spheres, then where those meet the kernel of the pair's kinds
 // (one loop per kind of pair, PartPairKind), then each pair's smallest part gap; (3) the safe
-// value. Leaves each pair's gap (a lower bound; +inf in a lane left open) in pairLaneGaps_, the
-// smallest gap * share in laneSafe_, and in laneScalar_ the pairs each lane must test alone. Lanes
+// value. Leaves each pair's gap (a lower bound; +inf in a lane left open) in pairLaneGaps, the
+// smallest gap * share in laneSafe, and in laneScalar the pairs each lane must test alone. Lanes
 // from `count` on repeat the last configuration: they are computed, never reported.
 template <class V>
-[[gnu::always_inline]] inline void CheckerState::screenLanesOf(const double* poses, int count, int first, bool tight) {
+[[gnu::always_inline]] inline void screenLanesOf(const CheckerModel& model, BatchScratch& scratch,
+                                                 const MotionShares& shares, const double* poses, int count, int first,
+                                                 bool tight) {
   using lanes::load;
   using lanes::store;
   constexpr int W = lanes::widthOf<V>;
-  const std::size_t selfCount = selfPairs_.size(), linkCount = geometricLinks_.size(), pairs = pairCount();
+  const SelfPairs& selfPairs = model.selfPairs();
+  const GeometricLinks& geometric = model.geometricLinks();
+  const PartPairTable& table = model.partPairs();
+  const std::vector<LinkParts>& links = model.links();
+  const std::vector<ObstaclePart>& obstacles = model.obstacles();
+  const double band = model.band();
+  const std::size_t selfCount = selfPairs.size(), linkCount = geometric.size(), pairs = model.pairCount();
   lanes::MaskOf<V> active;
   for (int l = 0; l < W; ++l) active[l] = first + l < count ? -1 : 0;
   poses += first;
-  double* gaps = pairLaneGaps_.data() + first;
-  double* partGaps = partPairGaps_.data() + first;
+  double* gaps = scratch.pairLaneGaps.data() + first;
+  double* partGaps = scratch.partPairGaps.data() + first;
   const auto part = [&](std::uint32_t index) {
-    return partLanes_.data() + static_cast<std::size_t>(index) * kPartValues * L + first;
+    return scratch.partLanes.data() + static_cast<std::size_t>(index) * kPartValues * L + first;
   };
   const auto bound = [&](int link) {
-    return pointAt<V>(boundLanes_.data() + static_cast<std::size_t>(link) * 3 * L + first);
+    return pointAt<V>(scratch.boundLanes.data() + static_cast<std::size_t>(link) * 3 * L + first);
   };
   const auto place = [&](int link) {
     const auto l = static_cast<std::size_t>(link);
-    if (partLanesPlaced_[l]) return;
-    partLanesPlaced_[l] = 1;
-    const double* m = poses + l * kValues * L;
-    const auto& parts = links_[l].parts;
+    if (scratch.partLanesPlaced[l]) return;
+    scratch.partLanesPlaced[l] = 1;
+    const double* m = poses + l * kBatchValues * L;
+    const auto& parts = links[l].parts;
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const ConvexPart& shape = parts[i];
-      double* out = part(static_cast<std::uint32_t>(partOffset_[l]) + static_cast<std::uint32_t>(i));
+      double* out = part(static_cast<std::uint32_t>(model.partOffset()[l]) + static_cast<std::uint32_t>(i));
       storePoint(out, transformed<V>(m, shape.a));
       storePoint(out + kPartBound * L, transformed<V>(m, shape.boundCentre));
       if (shape.kind == ConvexPart::Kind::Capsule) {
@@ -159,36 +176,36 @@ template <class V>
   };
 
   // (1) Bounds.
-  std::fill(partLanesPlaced_.begin(), partLanesPlaced_.end(), 0);
-  for (int l : boundLinks_)
-    storePoint(boundLanes_.data() + static_cast<std::size_t>(l) * 3 * L + first,
-               transformed<V>(poses + static_cast<std::size_t>(l) * kValues * L,
-                              links_[static_cast<std::size_t>(l)].boundCentre));
+  std::fill(scratch.partLanesPlaced.begin(), scratch.partLanesPlaced.end(), 0);
+  for (int l : model.boundLinks())
+    storePoint(scratch.boundLanes.data() + static_cast<std::size_t>(l) * 3 * L + first,
+               transformed<V>(poses + static_cast<std::size_t>(l) * kBatchValues * L,
+                              links[static_cast<std::size_t>(l)].boundCentre));
   for (std::size_t p = 0; p < selfCount; ++p) {
-    const Point<V> d = bound(pairA_[p]) - bound(pairB_[p]);
-    const V gap = lanes::sqrtBelow(lanes::dot(d, d)) - pairRadiusSum_[p];
+    const Point<V> d = bound(selfPairs.a[p]) - bound(selfPairs.b[p]);
+    const V gap = lanes::sqrtBelow(lanes::dot(d, d)) - selfPairs.radiusSum[p];
     store(gaps + p * L, gap);
-    pairNear_[p] = lanes::lowest(gap) <= band_;
+    scratch.pairNear[p] = lanes::lowest(gap) <= band;
   }
   // Against the obstacles: each obstacle's subtree radii first.
-  double* subtree = subtreeLanes_.data() + first;
-  for (std::size_t i = 0; i < linkCount; ++i) store(subtree + i * L, lanes::splat<V>(geometricBoundR_[i]));
+  double* subtree = scratch.subtreeLanes.data() + first;
+  for (std::size_t i = 0; i < linkCount; ++i) store(subtree + i * L, lanes::splat<V>(geometric.boundRadius[i]));
   for (std::size_t i = linkCount; i-- > 0;) {
-    const int parent = geometricParent_[i];
+    const int parent = geometric.parent[i];
     if (parent < 0) continue;
-    const Point<V> d = bound(geometricLinks_[i]) - bound(geometricLinks_[static_cast<std::size_t>(parent)]);
+    const Point<V> d = bound(geometric.links[i]) - bound(geometric.links[static_cast<std::size_t>(parent)]);
     double* r = subtree + static_cast<std::size_t>(parent) * L;
     store(r, lanes::max(load<V>(r), lanes::sqrt(lanes::dot(d, d)) + load<V>(subtree + i * L)));
   }
-  for (std::size_t o = 0; o < obstacles_.size(); ++o) switch (obstacles_[o].part.kind) {
+  for (std::size_t o = 0; o < obstacles.size(); ++o) switch (obstacles[o].part.kind) {
       case ConvexPart::Kind::Capsule:
-        screenObstacleOf<ConvexPart::Kind::Capsule, V>(o, first, tight);
+        screenObstacleOf<ConvexPart::Kind::Capsule, V>(model, scratch, o, first, tight);
         break;
       case ConvexPart::Kind::Box:
-        screenObstacleOf<ConvexPart::Kind::Box, V>(o, first, tight);
+        screenObstacleOf<ConvexPart::Kind::Box, V>(model, scratch, o, first, tight);
         break;
       case ConvexPart::Kind::Cylinder:
-        screenObstacleOf<ConvexPart::Kind::Cylinder, V>(o, first, tight);
+        screenObstacleOf<ConvexPart::Kind::Cylinder, V>(model, scratch, o, first, tight);
         break;
       case ConvexPart::Kind::Triangle:
         break;  // only the exact checker's mesh route holds triangles
@@ -196,122 +213,137 @@ template <class V>
 
   // (2) Parts.
   for (std::size_t pair = 0; pair < pairs; ++pair) {
-    if (!pairNear_[pair]) continue;
+    if (!scratch.pairNear[pair]) continue;
     if (pair < selfCount) {
-      place(pairA_[pair]);
-      place(pairB_[pair]);
+      place(selfPairs.a[pair]);
+      place(selfPairs.b[pair]);
     } else {
-      place(geometricLinks_[(pair - selfCount) % linkCount]);
+      place(geometric.links[(pair - selfCount) % linkCount]);
     }
   }
-  std::uint32_t counts[kPartPairKinds] = {};  // of partWork_'s lists
+  std::uint32_t counts[kPartPairKinds] = {};  // of partWork's lists
   for (std::size_t pair = 0; pair < pairs; ++pair) {
-    if (!pairNear_[pair]) continue;
-    for (std::uint32_t k = pairPartsBegin_[pair]; k < pairPartsBegin_[pair + 1]; ++k) {
-      const PartPair& pp = partPairs_[k];
+    if (!scratch.pairNear[pair]) continue;
+    for (std::uint32_t k = table.pairBegin[pair]; k < table.pairBegin[pair + 1]; ++k) {
+      const PartPair& pp = table.pairs[k];
       const Point<V> d = pointAt<V>(part(pp.indexA) + kPartBound * L) - pointAt<V>(part(pp.indexB) + kPartBound * L);
       const V spheres = lanes::sqrtBelow(lanes::dot(d, d)) -
-                        (partShapes_[pp.indexA].boundRadius + partShapes_[pp.indexB].boundRadius);
+                        (table.shapes[pp.indexA].boundRadius + table.shapes[pp.indexB].boundRadius);
       store(partGaps + static_cast<std::size_t>(k) * L, spheres);
-      const bool meet = tight || lanes::lowest(spheres) <= band_;  // tight: every part pair measured
+      const bool meet = tight || lanes::lowest(spheres) <= band;  // tight: every part pair measured
       const auto kind = static_cast<int>(pp.kind);
-      partWork_[partWorkBegin_[kind] + counts[kind]] = k;
+      scratch.partWork[table.kindBegin[kind] + counts[kind]] = k;
       counts[kind] += meet;
     }
   }
   const auto at = [](PairKind kind) { return static_cast<int>(kind); };
-  partPairGaps<PairKind::CapsuleCapsule, V>(*this, counts[at(PairKind::CapsuleCapsule)], first, tight);
-  partPairGaps<PairKind::CapsuleBox, V>(*this, counts[at(PairKind::CapsuleBox)], first, tight);
-  partPairGaps<PairKind::CapsuleCylinder, V>(*this, counts[at(PairKind::CapsuleCylinder)], first, tight);
-  partPairGaps<PairKind::BoxBox, V>(*this, counts[at(PairKind::BoxBox)], first, tight);
-  partPairGaps<PairKind::BoxCylinder, V>(*this, counts[at(PairKind::BoxCylinder)], first, tight);
-  partPairGaps<PairKind::CylinderBox, V>(*this, counts[at(PairKind::CylinderBox)], first, tight);
-  partPairGaps<PairKind::CylinderCylinder, V>(*this, counts[at(PairKind::CylinderCylinder)], first, tight);
+  partPairGaps<PairKind::CapsuleCapsule, V>(model, scratch, counts[at(PairKind::CapsuleCapsule)], first, tight);
+  partPairGaps<PairKind::CapsuleBox, V>(model, scratch, counts[at(PairKind::CapsuleBox)], first, tight);
+  partPairGaps<PairKind::CapsuleCylinder, V>(model, scratch, counts[at(PairKind::CapsuleCylinder)], first, tight);
+  partPairGaps<PairKind::BoxBox, V>(model, scratch, counts[at(PairKind::BoxBox)], first, tight);
+  partPairGaps<PairKind::BoxCylinder, V>(model, scratch, counts[at(PairKind::BoxCylinder)], first, tight);
+  partPairGaps<PairKind::CylinderBox, V>(model, scratch, counts[at(PairKind::CylinderBox)], first, tight);
+  partPairGaps<PairKind::CylinderCylinder, V>(model, scratch, counts[at(PairKind::CylinderCylinder)], first, tight);
   for (std::size_t pair = 0; pair < pairs; ++pair) {
-    if (!pairNear_[pair]) continue;
-    V partsGap = lanes::splat<V>(kInfinity);
-    for (std::uint32_t k = pairPartsBegin_[pair]; k < pairPartsBegin_[pair + 1]; ++k)
+    if (!scratch.pairNear[pair]) continue;
+    V partsGap = lanes::splat<V>(kBatchInfinity);
+    for (std::uint32_t k = table.pairBegin[pair]; k < table.pairBegin[pair + 1]; ++k)
       partsGap = lanes::min(partsGap, load<V>(partGaps + static_cast<std::size_t>(k) * L));
     const V gap = load<V>(gaps + pair * L);
-    const auto near = gap <= band_, alone = (partsGap <= band_) & near & active;
-    store(gaps + pair * L, lanes::select<V>(alone, lanes::splat<V>(kInfinity), lanes::select<V>(near, partsGap, gap)));
+    const auto near = gap <= band, alone = (partsGap <= band) & near & active;
+    store(gaps + pair * L,
+          lanes::select<V>(alone, lanes::splat<V>(kBatchInfinity), lanes::select<V>(near, partsGap, gap)));
     if (lanes::any(alone))
-      for (unsigned b = lanes::bits(alone); b; b &= b - 1) laneScalar_[first + __builtin_ctz(b)].push_back(pair);
+      for (unsigned b = lanes::bits(alone); b; b &= b - 1) scratch.laneScalar[first + __builtin_ctz(b)].push_back(pair);
   }
 
   // (3) The safe value.
-  V safe = lanes::splat<V>(kInfinity);
-  for (std::size_t p = 0; p < selfCount; ++p) safe = lanes::min(safe, load<V>(gaps + p * L) * pairShare_[p]);
-  for (std::size_t o = 0; o < obstacles_.size(); ++o)
+  V safe = lanes::splat<V>(kBatchInfinity);
+  for (std::size_t p = 0; p < selfCount; ++p) safe = lanes::min(safe, load<V>(gaps + p * L) * shares.pair[p]);
+  for (std::size_t o = 0; o < obstacles.size(); ++o)
     for (std::size_t i = 0; i < linkCount; ++i)
-      safe = lanes::min(safe, load<V>(gaps + (selfCount + o * linkCount + i) * L) * linkShare_[i]);
-  store(laneSafe_ + first, safe);
+      safe = lanes::min(safe, load<V>(gaps + (selfCount + o * linkCount + i) * L) * shares.link[i]);
+  store(scratch.laneSafe + first, safe);
 }
 
-namespace {
+// The lane-vector stage at each SIMD level, built for that instruction set: fills pairLaneGaps,
+// laneSafe and laneScalar. `tight`: every pair's gap as tight as these tests get it (the caller
+// keeps them, as motion-check certificates), not just tight enough to prove.
+[[gnu::target("avx512f")]] void screenAvx512(const CheckerModel& model, CheckerScratch& scratch, const double* poses,
+                                             int count, bool tight) {
+  screenLanesOf<lanes::Vec<8>>(model, scratch.batch(), scratch.shares(), poses, count, 0, tight);
+}
+[[gnu::target("avx2")]] void screenAvx2(const CheckerModel& model, CheckerScratch& scratch, const double* poses,
+                                        int count, bool tight) {
+  for (int first = 0; first < count; first += 4)
+    screenLanesOf<lanes::Vec<4>>(model, scratch.batch(), scratch.shares(), poses, count, first, tight);
+}
+void screenSse2(const CheckerModel& model, CheckerScratch& scratch, const double* poses, int count, bool tight) {
+  for (int first = 0; first < count; first += 2)
+    screenLanesOf<lanes::Vec<2>>(model, scratch.batch(), scratch.shares(), poses, count, first, tight);
+}
 
-// screenLanes at each SIMD level: the lane-vector stage built for that instruction set.
-[[gnu::target("avx512f")]] void screenAvx512(CheckerState& state, const double* poses, int count, bool tight) {
-  state.screenLanesOf<lanes::Vec<8>>(poses, count, 0, tight);
-}
-[[gnu::target("avx2")]] void screenAvx2(CheckerState& state, const double* poses, int count, bool tight) {
-  for (int first = 0; first < count; first += 4) state.screenLanesOf<lanes::Vec<4>>(poses, count, first, tight);
-}
-void screenSse2(CheckerState& state, const double* poses, int count, bool tight) {
-  for (int first = 0; first < count; first += 2) state.screenLanesOf<lanes::Vec<2>>(poses, count, first, tight);
+void screenLanes(const CheckerModel& model, CheckerScratch& scratch, SimdLevel level, const double* poses, int count,
+                 bool tight) {
+  switch (level) {
+    case SimdLevel::avx512:
+      return screenAvx512(model, scratch, poses, count, tight);
+    case SimdLevel::avx2:
+      return screenAvx2(model, scratch, poses, count, tight);
+    case SimdLevel::sse2:
+      break;
+  }
+  screenSse2(model, scratch, poses, count, tight);
 }
 
 }  // namespace
 
-void CheckerState::screenLanes(const double* poses, int count, bool tight) {
-  switch (simdLevel_) {
-    case SimdLevel::avx512:
-      return screenAvx512(*this, poses, count, tight);
-    case SimdLevel::avx2:
-      return screenAvx2(*this, poses, count, tight);
-    case SimdLevel::sse2:
-      break;
-  }
-  screenSse2(*this, poses, count, tight);
-}
-
-int CheckerState::screenBatch(const Configuration* const* configurations, int count, const double* poses, bool* valid,
-                              double* safe, double* pairGaps, const bool* stopAt) {
-  const std::size_t selfCount = selfPairs_.size(), linkCount = geometricLinks_.size(), pairs = pairCount();
-  if (!(staticSelfCollisions_.empty() && staticEnvironmentCollisions_.empty())) {
-    for (int lane = 0; lane < count; ++lane) valid[lane] = false, safe[lane] = 0.0, ++statistics_.provenColliding;
+int screenBatch(const CheckerModel& model, CheckerScratch& scratch, SimdLevel level,
+                const Configuration* const* configurations, int count, const double* poses, bool* valid, double* safe,
+                double* pairGaps, const bool* stopAt) {
+  const SelfPairs& selfPairs = model.selfPairs();
+  const GeometricLinks& geometric = model.geometricLinks();
+  const std::size_t selfCount = selfPairs.size(), linkCount = geometric.size(), pairs = model.pairCount();
+  BatchScratch& batch = scratch.batch();
+  const MotionShares& shares = scratch.shares();
+  FastCheckStatistics& statistics = scratch.statistics();
+  std::vector<Flag>& uncertain = scratch.uncertain();
+  if (model.staticCollisions().any(false)) {
+    for (int lane = 0; lane < count; ++lane) valid[lane] = false, safe[lane] = 0.0, ++statistics.provenColliding;
     return stopAt && !*stopAt ? 0 : count;
   }
-  for (int lane = 0; lane < count; ++lane) laneScalar_[lane].clear();
-  screenLanes(poses, count, pairGaps != nullptr);
+  for (int lane = 0; lane < count; ++lane) batch.laneScalar[lane].clear();
+  screenLanes(model, scratch, level, poses, count, pairGaps != nullptr);
 
   // Lane by lane: the pairs the lane vectors left open, FCL for those within the band, the verdict.
   for (int lane = 0; lane < count; ++lane) {
-    beginLane(poses, L, lane);
-    uncertain_.clear();
+    beginLane(model, scratch, poses, L, lane);
+    uncertain.clear();
     bool overlapping = false;
-    double laneSafe = laneSafe_[lane];
-    for (const std::size_t pair : laneScalar_[lane]) {
+    double laneSafe = batch.laneSafe[lane];
+    for (const std::size_t pair : batch.laneScalar[lane]) {
       const bool self = pair < selfCount;
       const std::size_t i = self ? 0 : (pair - selfCount) % linkCount, o = self ? 0 : (pair - selfCount) / linkCount;
-      const int a = self ? pairA_[pair] : geometricLinks_[i], b = self ? pairB_[pair] : static_cast<int>(o);
-      if (self && !boundPlaced_[static_cast<std::size_t>(b)]) placeBound(b);  // linkPairContact reads b's bound
+      const int a = self ? selfPairs.a[pair] : geometric.links[i], b = self ? selfPairs.b[pair] : static_cast<int>(o);
+      // linkPairContact reads b's bound
+      if (self && !scratch.lane().boundPlaced[static_cast<std::size_t>(b)]) placeBound(model, scratch, b);
       double gap;
-      const Outcome outcome = self ? linkPairContact(a, b, gap) : linkObstacleContact(a, o, gap);
+      const Outcome outcome =
+          self ? linkPairContact(model, scratch, a, b, gap) : linkObstacleContact(model, scratch, a, o, gap);
       if (outcome == Outcome::Overlapping) {
         overlapping = true;
         break;
       }
       if (outcome != Outcome::Apart) {
-        uncertain_.push_back(Flag{self, a, b, outcome});
+        uncertain.push_back(Flag{self, a, b, outcome});
         gap = 0.0;
       }
-      pairLaneGaps_[pair * L + static_cast<std::size_t>(lane)] = gap;
-      laneSafe = std::min(laneSafe, gap * (self ? pairShare_[pair] : linkShare_[i]));
+      batch.pairLaneGaps[pair * L + static_cast<std::size_t>(lane)] = gap;
+      laneSafe = std::min(laneSafe, gap * (self ? shares.pair[pair] : shares.link[i]));
     }
     safe[lane] = 0.0;
     if (overlapping) {
-      ++statistics_.provenColliding;
+      ++statistics.provenColliding;
       valid[lane] = false;
       if (stopAt && !*stopAt) return lane;
       continue;
@@ -319,13 +351,13 @@ int CheckerState::screenBatch(const Configuration* const* configurations, int co
     if (pairGaps)
       for (std::size_t pair = 0; pair < pairs; ++pair)
         pairGaps[static_cast<std::size_t>(lane) * pairs + pair] =
-            pairLaneGaps_[pair * L + static_cast<std::size_t>(lane)];
-    if (uncertain_.empty()) {
-      ++statistics_.provenFree;
+            batch.pairLaneGaps[pair * L + static_cast<std::size_t>(lane)];
+    if (uncertain.empty()) {
+      ++statistics.provenFree;
       valid[lane] = true;
       safe[lane] = laneSafe;
     } else {
-      valid[lane] = confirmUncertain(*configurations[lane]);
+      valid[lane] = confirmUncertain(model, scratch, *configurations[lane]);
     }
     if (stopAt && valid[lane] == *stopAt) return lane;
   }

@@ -4,31 +4,55 @@
 #include <stdexcept>
 #include <string>
 
-#include "checker_state.hpp"
+#include "batch_screen.hpp"
+#include "checker_model.hpp"
+#include "checker_scratch.hpp"
+#include "scalar_screen.hpp"
 
 namespace pmdplan {
+namespace {
+
+std::unique_ptr<fast::CheckerScratch> scratchFor(const std::shared_ptr<const fast::CheckerModel>& model,
+                                                 const ExactCollisionChecker& exact) {
+  if (!model) throw std::invalid_argument("the fast checker needs a model");
+  if (!model->fits(exact)) throw std::invalid_argument("the exact checker does not fit the fast checker's model");
+  return std::make_unique<fast::CheckerScratch>(*model, exact);
+}
+
+}  // namespace
 
 FastCollisionChecker::FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, double band)
-    : state_(std::make_unique<fast::CheckerState>(task, exact, band)), pairs_(*state_) {}
+    : model_(std::make_shared<const fast::CheckerModel>(task, exact, band)),
+      scratch_(std::make_unique<fast::CheckerScratch>(*model_, exact)),
+      simdLevel_(widestSimdLevel()),
+      pairs_(*model_, *scratch_) {}
+
+FastCollisionChecker::FastCollisionChecker(std::shared_ptr<const fast::CheckerModel> model,
+                                           ExactCollisionChecker& exact)
+    : model_(std::move(model)),
+      scratch_(scratchFor(model_, exact)),
+      simdLevel_(widestSimdLevel()),
+      pairs_(*model_, *scratch_) {}
 
 FastCollisionChecker::~FastCollisionChecker() = default;
 
-SimdLevel FastCollisionChecker::simdLevel() const { return state_->simdLevel_; }
+SimdLevel FastCollisionChecker::simdLevel() const { return simdLevel_; }
 
 void FastCollisionChecker::setSimdLevel(SimdLevel level) {
   const bool known = level == SimdLevel::sse2 || level == SimdLevel::avx2 || level == SimdLevel::avx512;
   if (!known || laneWidth(level) > laneWidth(widestSimdLevel()))
     throw std::invalid_argument(std::string("SIMD level ") + (known ? simdLevelName(level) : "unknown") +
                                 ": this CPU runs sse2 to " + simdLevelName(widestSimdLevel()));
-  state_->simdLevel_ = level;
+  simdLevel_ = level;
 }
 
 namespace {
 
 /// The batch's joint values into the kinematics' lanes (spare lanes repeat the last configuration),
-/// then its forward kinematics into the pose scratch.
-void loadLanes(fast::CheckerState& s, const Configuration* const* configurations, int count) {
-  const int dof = s.kinematics_.dof();
+/// then its forward kinematics into the scratch's poses.
+void loadLanes(const fast::CheckerModel& model, fast::CheckerScratch& scratch,
+               const Configuration* const* configurations, int count) {
+  const int dof = model.dof();
   double joints[64 * FastCollisionChecker::kLanes];
   std::vector<double> wide;
   double* q = joints;
@@ -41,44 +65,49 @@ void loadLanes(fast::CheckerState& s, const Configuration* const* configurations
     if (c.size() != dof) throw std::invalid_argument("configuration size does not match the robot");
     for (int i = 0; i < dof; ++i) q[i * FastCollisionChecker::kLanes + lane] = c[i];
   }
-  s.kinematics_.computeBatch(q, s.poseScratch_.data());
+  model.kinematics().computeBatch(q, scratch.poses());
 }
 
-/// isValid / isArmValid: one configuration through the scalar screen.
-bool checkOne(fast::CheckerState& s, const Configuration& q, bool armOnly) {
-  ++s.checks_;
-  if (q.size() != s.kinematics_.dof()) throw std::invalid_argument("configuration size does not match the robot");
-  s.kinematics_.computeOne(q.data(), s.poseScratch_.data());
-  return s.decide(q, s.poseScratch_.data(), 1, 0, armOnly, nullptr);
+/// isValid / isArmValid, and a lone state of checkBatch: one configuration through the scalar
+/// screen.
+bool checkOne(const fast::CheckerModel& model, fast::CheckerScratch& scratch, const Configuration& q, bool armOnly,
+              double* safeDisplacement = nullptr, double* pairGaps = nullptr) {
+  if (q.size() != model.dof()) throw std::invalid_argument("configuration size does not match the robot");
+  model.kinematics().computeOne(q.data(), scratch.poses());
+  return fast::decide(model, scratch, q, scratch.poses(), 1, 0, armOnly, safeDisplacement, pairGaps);
 }
 
 }  // namespace
 
-bool FastCollisionChecker::isValid(const Configuration& q) { return checkOne(*state_, q, false); }
+bool FastCollisionChecker::isValid(const Configuration& q) {
+  ++checks_;
+  return checkOne(*model_, *scratch_, q, false);
+}
 
-bool FastCollisionChecker::isArmValid(const Configuration& q) { return checkOne(*state_, q, true); }
+bool FastCollisionChecker::isArmValid(const Configuration& q) {
+  ++checks_;
+  return checkOne(*model_, *scratch_, q, true);
+}
 
 void FastCollisionChecker::checkBatch(const Configuration* const* configurations, int count, bool* valid,
                                       double* safeDisplacement, double* pairGaps) {
-  fast::CheckerState& s = *state_;
   if (count < 1 || count > kLanes) throw std::invalid_argument("checkBatch: 1 to kLanes configurations");
-  const int dof = s.kinematics_.dof();
   if (count == 1) {  // a lone state: the single-lane kinematics is cheaper than a padded batch
-    if (configurations[0]->size() != dof) throw std::invalid_argument("configuration size does not match the robot");
-    ++s.checks_;
-    s.kinematics_.computeOne(configurations[0]->data(), s.poseScratch_.data());
-    valid[0] = s.decide(*configurations[0], s.poseScratch_.data(), 1, 0, false, &safeDisplacement[0], pairGaps);
+    if (configurations[0]->size() != model_->dof())
+      throw std::invalid_argument("configuration size does not match the robot");
+    ++checks_;
+    valid[0] = checkOne(*model_, *scratch_, *configurations[0], false, &safeDisplacement[0], pairGaps);
     return;
   }
-  loadLanes(s, configurations, count);
-  s.checks_ += static_cast<std::size_t>(count);
-  s.screenBatch(configurations, count, s.poseScratch_.data(), valid, safeDisplacement, pairGaps);
+  loadLanes(*model_, *scratch_, configurations, count);
+  checks_ += static_cast<std::size_t>(count);
+  fast::screenBatch(*model_, *scratch_, simdLevel_, configurations, count, scratch_->poses(), valid, safeDisplacement,
+                    pairGaps);
 }
 
-std::size_t FastCollisionChecker::checkCount() const { return state_->checks_; }
+std::size_t FastCollisionChecker::checkCount() const { return checks_; }
 
 int FastCollisionChecker::firstWithValidity(const Configuration* const* configurations, int count, bool wanted) {
-  fast::CheckerState& s = *state_;
   bool valid[kLanes];
   double safe[kLanes];
   for (int first = 0; first < count; first += kLanes) {
@@ -88,24 +117,27 @@ int FastCollisionChecker::firstWithValidity(const Configuration* const* configur
       if (valid[0] == wanted) return first;
       continue;
     }
-    loadLanes(s, configurations + first, batch);
-    s.checks_ += static_cast<std::size_t>(batch);
-    const int found =
-        s.screenBatch(configurations + first, batch, s.poseScratch_.data(), valid, safe, nullptr, &wanted);
+    loadLanes(*model_, *scratch_, configurations + first, batch);
+    checks_ += static_cast<std::size_t>(batch);
+    const int found = fast::screenBatch(*model_, *scratch_, simdLevel_, configurations + first, batch,
+                                        scratch_->poses(), valid, safe, nullptr, &wanted);
     if (found < batch) return first + found;
   }
   return count;
 }
 
 void FastCollisionChecker::setMotion(const Configuration& from, const Configuration& to) {
-  state_->setMotion(from, to);
+  fast::MotionShares& shares = scratch_->shares();
+  model_->motionWeights().motionShares(from, to, shares.pair, shares.link);
 }
 
-ScreenResult FastCollisionChecker::screen(const Configuration& q, bool armOnly) { return state_->screen(q, armOnly); }
+ScreenResult FastCollisionChecker::screen(const Configuration& q, bool armOnly) {
+  return fast::screen(*model_, *scratch_, q, armOnly);
+}
 
-const FastCheckStatistics& FastCollisionChecker::statistics() const { return state_->statistics_; }
-const std::vector<LinkParts>& FastCollisionChecker::links() const { return state_->links_; }
-const ExactCollisionChecker& FastCollisionChecker::exact() const { return state_->exact_; }
-double FastCollisionChecker::band() const { return state_->band_; }
+const FastCheckStatistics& FastCollisionChecker::statistics() const { return scratch_->statistics(); }
+const std::vector<LinkParts>& FastCollisionChecker::links() const { return model_->links(); }
+const ExactCollisionChecker& FastCollisionChecker::exact() const { return scratch_->exact(); }
+double FastCollisionChecker::band() const { return model_->band(); }
 
 }  // namespace pmdplan

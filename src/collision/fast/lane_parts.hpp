@@ -1,5 +1,5 @@
 #pragma once
-// A placed part in the batch screen's scratch (CheckerState::partLanes_): its numbers as
+// A placed part in the batch screen's scratch (BatchScratch::partLanes): its numbers as
 // [value][lane], kLanes lanes apart whatever the lane vector's width, and the reads and writes of
 // them the pair kernels share. Always inlined.
 #include "lane_vector.hpp"

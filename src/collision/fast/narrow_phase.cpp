@@ -1,78 +1,85 @@
-// The fast checker's narrow phase, one configuration (a lane of posed links) at a time: link
-// against link or obstacle, part against part (partContact, convex_distance.hpp), each first by
-// the bounding spheres; the parts placed in the world on first use; FCL for the pairs it leaves.
+// The fast checker's narrow phase (narrow_phase.hpp): link against link or obstacle, part against
+// part (partContact, convex_distance.hpp), each first by the bounding spheres; the parts placed in
+// the world on first use; FCL for the pairs it leaves.
+#include "narrow_phase.hpp"
+
 #include <algorithm>
 #include <limits>
 
-#include "checker_state.hpp"
+#include "checker_model.hpp"
+#include "checker_scratch.hpp"
 #include "pmdplan/collision/fast/convex_distance.hpp"
 
 namespace pmdplan::fast {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr int kValues = BatchedForwardKinematics::kPoseValues;
+constexpr double kNarrowInfinity = std::numeric_limits<double>::infinity();
+constexpr int kNarrowValues = BatchedForwardKinematics::kPoseValues;
 
-}  // namespace
-
-const ConvexPart* CheckerState::placedBounds(int link) {
+/// The link's parts with their bounding spheres placed (the rest of each part is not yet).
+const ConvexPart* placedBounds(const CheckerModel& model, LaneScratch& s, int link) {
   const auto l = static_cast<std::size_t>(link);
-  ConvexPart* world = worldParts_.data() + partOffset_[l];
-  if (placed_[l]) return world;
-  double* pose = linkPoses_.data() + l * kValues;
-  for (int i = 0; i < kValues; ++i) pose[i] = lanePoses_[(link * kValues + i) * laneStride_ + lane_];
-  const auto& local = links_[l].parts;
+  const auto offset = static_cast<std::size_t>(model.partOffset()[l]);
+  ConvexPart* world = s.worldParts.data() + offset;
+  if (s.placed[l]) return world;
+  double* pose = s.linkPoses.data() + l * kNarrowValues;
+  for (int i = 0; i < kNarrowValues; ++i) pose[i] = s.poses[(link * kNarrowValues + i) * s.stride + s.lane];
+  const auto& local = model.links()[l].parts;
   for (std::size_t p = 0; p < local.size(); ++p) {
     const double* c = local[p].boundCentre;
     double* w = world[p].boundCentre;
     for (int r = 0; r < 3; ++r)
       w[r] = pose[r * 3] * c[0] + pose[r * 3 + 1] * c[1] + pose[r * 3 + 2] * c[2] + pose[9 + r];
     world[p].boundRadius = local[p].boundRadius;
-    partPlaced_[static_cast<std::size_t>(partOffset_[l]) + p] = 0;
+    s.partPlaced[offset + p] = 0;
   }
-  placed_[l] = 1;
+  s.placed[l] = 1;
   return world;
 }
 
-const ConvexPart& CheckerState::placedPart(int link, std::size_t index) {
+/// Part `index` of the link, all of it placed (placedBounds first).
+const ConvexPart& placedPart(const CheckerModel& model, LaneScratch& s, int link, std::size_t index) {
   const auto l = static_cast<std::size_t>(link);
-  const std::size_t k = static_cast<std::size_t>(partOffset_[l]) + index;
-  if (!partPlaced_[k]) {
-    placePart(links_[l].parts[index], linkPoses_.data() + l * kValues, worldParts_[k]);
-    partPlaced_[k] = 1;
+  const std::size_t k = static_cast<std::size_t>(model.partOffset()[l]) + index;
+  if (!s.partPlaced[k]) {
+    placePart(model.links()[l].parts[index], s.linkPoses.data() + l * kNarrowValues, s.worldParts[k]);
+    s.partPlaced[k] = 1;
   }
-  return worldParts_[k];
+  return s.worldParts[k];
 }
+
+}  // namespace
 
 // Part against part; a part first against the other link's bound, each part pair first by its
 // bounding spheres. Overlapping as soon as one part pair overlaps; Uncertain if one is too close
 // to call and none overlaps; else Apart with the smallest gap.
-CheckerState::Outcome CheckerState::linkPairContact(int a, int b, double& gap) {
-  const ConvexPart* partsA = placedBounds(a);
-  const ConvexPart* partsB = placedBounds(b);
-  const std::size_t na = links_[static_cast<std::size_t>(a)].parts.size(),
-                    nb = links_[static_cast<std::size_t>(b)].parts.size();
-  const double boundB[3] = {boundX_[static_cast<std::size_t>(b)], boundY_[static_cast<std::size_t>(b)],
-                            boundZ_[static_cast<std::size_t>(b)]};
-  const double boundRadiusB = links_[static_cast<std::size_t>(b)].boundRadius;
+Outcome linkPairContact(const CheckerModel& model, CheckerScratch& scratch, int a, int b, double& gap) {
+  LaneScratch& s = scratch.lane();
+  const double band = model.band();
+  const ConvexPart* partsA = placedBounds(model, s, a);
+  const ConvexPart* partsB = placedBounds(model, s, b);
+  const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+  const std::size_t na = model.links()[ua].parts.size(), nb = model.links()[ub].parts.size();
+  const double boundB[3] = {s.boundX[ub], s.boundY[ub], s.boundZ[ub]};
+  const double boundRadiusB = model.links()[ub].boundRadius;
   bool uncertain = false, enclosures = false;
-  gap = kInfinity;
+  gap = kNarrowInfinity;
   for (std::size_t i = 0; i < na; ++i) {
     const ConvexPart& pa = partsA[i];
     const double toLink = sphereSphereGap(pa.boundCentre, pa.boundRadius, boundB, boundRadiusB);
-    if (toLink > band_) {
+    if (toLink > band) {
       gap = std::min(gap, toLink);
       continue;
     }
     for (std::size_t j = 0; j < nb; ++j) {
       const ConvexPart& pb = partsB[j];
       const double bounds = sphereSphereGap(pa.boundCentre, pa.boundRadius, pb.boundCentre, pb.boundRadius);
-      if (bounds > band_) {
+      if (bounds > band) {
         gap = std::min(gap, bounds);
         continue;
       }
-      const ConvexPart &worldA = placedPart(a, i), &worldB = placedPart(b, j);
-      const PartContact contact = partContact(worldA, worldB, band_);
+      const ConvexPart &worldA = placedPart(model, s, a, i), &worldB = placedPart(model, s, b, j);
+      const PartContact contact = partContact(worldA, worldB, band);
       if (contact.contact == Contact::Apart) {
         gap = std::min(gap, contact.gap);
         continue;
@@ -89,20 +96,22 @@ CheckerState::Outcome CheckerState::linkPairContact(int a, int b, double& gap) {
   return enclosures ? Outcome::EnclosuresOverlap : uncertain ? Outcome::Uncertain : Outcome::Apart;
 }
 
-CheckerState::Outcome CheckerState::linkObstacleContact(int link, std::size_t o, double& gap) {
-  const ConvexPart* parts = placedBounds(link);
-  const std::size_t count = links_[static_cast<std::size_t>(link)].parts.size();
-  const ObstaclePart& obstacle = obstacles_[o];
+Outcome linkObstacleContact(const CheckerModel& model, CheckerScratch& scratch, int link, std::size_t o, double& gap) {
+  LaneScratch& s = scratch.lane();
+  const double band = model.band();
+  const ConvexPart* parts = placedBounds(model, s, link);
+  const std::size_t count = model.links()[static_cast<std::size_t>(link)].parts.size();
+  const ObstaclePart& obstacle = model.obstacles()[o];
   bool uncertain = false, enclosures = false;
-  gap = kInfinity;
+  gap = kNarrowInfinity;
   for (std::size_t i = 0; i < count; ++i) {
     const double bound = sphereGap(obstacle.part, parts[i].boundCentre, parts[i].boundRadius);
-    if (bound > band_) {
+    if (bound > band) {
       gap = std::min(gap, bound);
       continue;
     }
-    const ConvexPart& part = placedPart(link, i);
-    const PartContact contact = partContact(part, obstacle.part, band_);
+    const ConvexPart& part = placedPart(model, s, link, i);
+    const PartContact contact = partContact(part, obstacle.part, band);
     if (contact.contact == Contact::Apart) {
       gap = std::min(gap, contact.gap);
       continue;
@@ -117,39 +126,44 @@ CheckerState::Outcome CheckerState::linkObstacleContact(int link, std::size_t o,
   return enclosures ? Outcome::EnclosuresOverlap : uncertain ? Outcome::Uncertain : Outcome::Apart;
 }
 
-void CheckerState::beginLane(const double* poses, int stride, int lane) {
-  lanePoses_ = poses, laneStride_ = stride, lane_ = lane;
-  std::fill(placed_.begin(), placed_.end(), 0);
-  std::fill(boundPlaced_.begin(), boundPlaced_.end(), 0);
+void beginLane(const CheckerModel&, CheckerScratch& scratch, const double* poses, int stride, int lane) {
+  LaneScratch& s = scratch.lane();
+  s.poses = poses, s.stride = stride, s.lane = lane;
+  std::fill(s.placed.begin(), s.placed.end(), 0);
+  std::fill(s.boundPlaced.begin(), s.boundPlaced.end(), 0);
 }
 
-void CheckerState::placeBound(int link) {
+void placeBound(const CheckerModel& model, CheckerScratch& scratch, int link) {
+  LaneScratch& s = scratch.lane();
   const auto ul = static_cast<std::size_t>(link);
-  const double* c = links_[ul].boundCentre;
-  double m[kValues];
-  for (int i = 0; i < kValues; ++i) m[i] = lanePoses_[(link * kValues + i) * laneStride_ + lane_];
-  boundX_[ul] = m[0] * c[0] + m[1] * c[1] + m[2] * c[2] + m[9];
-  boundY_[ul] = m[3] * c[0] + m[4] * c[1] + m[5] * c[2] + m[10];
-  boundZ_[ul] = m[6] * c[0] + m[7] * c[1] + m[8] * c[2] + m[11];
-  boundPlaced_[ul] = 1;
+  const double* c = model.links()[ul].boundCentre;
+  double m[kNarrowValues];
+  for (int i = 0; i < kNarrowValues; ++i) m[i] = s.poses[(link * kNarrowValues + i) * s.stride + s.lane];
+  s.boundX[ul] = m[0] * c[0] + m[1] * c[1] + m[2] * c[2] + m[9];
+  s.boundY[ul] = m[3] * c[0] + m[4] * c[1] + m[5] * c[2] + m[10];
+  s.boundZ[ul] = m[6] * c[0] + m[7] * c[1] + m[8] * c[2] + m[11];
+  s.boundPlaced[ul] = 1;
 }
 
-bool CheckerState::confirmUncertain(const Configuration& q) {
+bool confirmUncertain(const CheckerModel&, CheckerScratch& scratch, const Configuration& q) {
+  std::vector<Flag>& uncertain = scratch.uncertain();
+  FastCheckStatistics& statistics = scratch.statistics();
+  const ExactCollisionChecker& exact = scratch.exact();
   // Pairs whose mesh enclosures overlap deeply are the likeliest to collide: asked first.
-  std::stable_partition(uncertain_.begin(), uncertain_.end(),
+  std::stable_partition(uncertain.begin(), uncertain.end(),
                         [](const Flag& f) { return f.outcome == Outcome::EnclosuresOverlap; });
-  exact_.kinematics().linkPoses(q, exactPoses_);
-  for (const Flag& flag : uncertain_) {
-    ++statistics_.pairsConfirmed;
-    const bool collides = flag.self
-                              ? exact_.linkPairCollides(exactPoses_, flag.a, flag.b)
-                              : exact_.linkObstacleCollides(exactPoses_, flag.a, static_cast<std::size_t>(flag.b));
+  exact.kinematics().linkPoses(q, scratch.exactPoses());
+  for (const Flag& flag : uncertain) {
+    ++statistics.pairsConfirmed;
+    const bool collides =
+        flag.self ? exact.linkPairCollides(scratch.exactPoses(), flag.a, flag.b)
+                  : exact.linkObstacleCollides(scratch.exactPoses(), flag.a, static_cast<std::size_t>(flag.b));
     if (collides) {
-      ++statistics_.confirmedColliding;
+      ++statistics.confirmedColliding;
       return false;
     }
   }
-  ++statistics_.confirmedFree;
+  ++statistics.confirmedFree;
   return true;
 }
 

@@ -11,7 +11,9 @@
 // mesh not proven apart, is handed to the exact checker (ExactCollisionChecker::linkPairCollides /
 // linkObstacleCollides) — so every answer equals the exact checker's while it runs on almost no
 // checks. Pairs that no joint moves (links fixed to the base, static obstacles) are decided once,
-// by the exact checker. The stages and their scratch live in src/collision/fast/ (checker_state.hpp).
+// by the exact checker. The task's parts and pairs form an immutable model built once
+// (src/collision/fast/checker_model.hpp), which checkers may share; each checker writes only its
+// own scratch (checker_scratch.hpp); the stages are functions of the two (docs/architecture.md).
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -25,6 +27,10 @@
 #include "pmdplan/collision/state_validator.hpp"
 
 namespace pmdplan {
+namespace fast {
+class CheckerModel;
+class CheckerScratch;
+}  // namespace fast
 
 class FastCollisionChecker : public StateValidator {
  public:
@@ -37,6 +43,12 @@ class FastCollisionChecker : public StateValidator {
   /// `exact` must be built on the same task and outlive this checker; its check count is not
   /// touched (confirmations are pair tests).
   FastCollisionChecker(const Task& task, ExactCollisionChecker& exact, double band = kDefaultBand);
+  /// A checker on another's model (model(): the same task and band, nothing rebuilt), confirming
+  /// with `exact` (built on the same Task object as the model's; it must outlive this checker),
+  /// with its own scratch, statistics, check count, motion and SIMD level: with an exact checker
+  /// each, checkers sharing one model may run in parallel threads. Throws std::invalid_argument
+  /// for another task's exact checker or no model.
+  FastCollisionChecker(std::shared_ptr<const fast::CheckerModel> model, ExactCollisionChecker& exact);
   ~FastCollisionChecker() override;
   FastCollisionChecker(const FastCollisionChecker&) = delete;
   FastCollisionChecker& operator=(const FastCollisionChecker&) = delete;
@@ -79,9 +91,15 @@ class FastCollisionChecker : public StateValidator {
   const std::vector<LinkParts>& links() const;
   const ExactCollisionChecker& exact() const;
   double band() const;
+  /// The task's parts, pairs and weights, built once and never changed after: share it with
+  /// another checker through the constructor above.
+  std::shared_ptr<const fast::CheckerModel> model() const { return model_; }
 
  private:
-  std::unique_ptr<fast::CheckerState> state_;
+  std::shared_ptr<const fast::CheckerModel> model_;
+  std::unique_ptr<fast::CheckerScratch> scratch_;
+  SimdLevel simdLevel_;
+  std::size_t checks_ = 0;
   PairTests pairs_;
 };
 

@@ -8,8 +8,9 @@
 
 namespace pmdplan {
 namespace fast {
-struct CheckerState;
-}
+class CheckerModel;
+class CheckerScratch;
+}  // namespace fast
 
 class PairTests {
  public:
@@ -26,8 +27,9 @@ class PairTests {
 
  private:
   friend class FastCollisionChecker;
-  explicit PairTests(fast::CheckerState& state) : state_(&state) {}
-  fast::CheckerState* state_;
+  PairTests(const fast::CheckerModel& model, fast::CheckerScratch& scratch) : model_(&model), scratch_(&scratch) {}
+  const fast::CheckerModel* model_;
+  fast::CheckerScratch* scratch_;
 };
 
 }  // namespace pmdplan

@@ -7,11 +7,11 @@
 
 #include "pmdplan/io/viewer/viewer_data.hpp"
 
-namespace pmdplan::cli {
+namespace pmdplan {
 
 /// Checks the files writeViewerFolder would write into `directory` (field `option`); a folder not
 /// there yet holds no input, so its files are checked for their names' length only.
 void checkViewerFolderOutputs(const std::filesystem::path& directory, const ViewerData& data,
                               const std::filesystem::path& assetDirectory, const std::string& option);
 
-}  // namespace pmdplan::cli
+}  // namespace pmdplan

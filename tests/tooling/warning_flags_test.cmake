@@ -1,0 +1,60 @@
+# The project's warning flags can fail a build: compiles small files with the compiler and exactly
+# the options of pmdplan's own targets (tests/CMakeLists.txt passes the compile options of
+# pmdplan_core, cmake/pmdplanWarnings.cmake, with the build type's flags and the language standard).
+# A clean file must compile; a file with one warning of each kind (-Wall, -Wextra, -Wpedantic) must
+# make the compiler fail (with PMDPLAN_WERROR; without it, print the warning) naming the warning.
+#   cmake -DCOMPILER=c++ -DFLAGS="a|b|..." -DWERROR=ON -DWORK=DIR -P warning_flags_test.cmake
+cmake_minimum_required(VERSION 3.20)
+foreach(variable COMPILER FLAGS WERROR WORK)
+  if(NOT DEFINED ${variable})
+    message(FATAL_ERROR "warning_flags_test.cmake: -D${variable}=... missing")
+  endif()
+endforeach()
+string(REPLACE "|" ";" flags "${FLAGS}")
+list(FILTER flags EXCLUDE REGEX "^$")
+foreach(required -Wall -Wextra -Wpedantic)
+  if(NOT required IN_LIST flags)
+    message(FATAL_ERROR "the project's compile options lack ${required}: ${flags}")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+# name, the warning's option as the compilers name it, the file.
+set(clean_source "struct Pair { int a; int b; };\nint sum(const Pair& p) { return p.a + p.b; }\nint main() { return sum(Pair{1, 2}) - 3; }\n")
+set(wall_source "int main() {\n  int unused = 0;\n  return 0;\n}\n")
+set(wextra_source "struct Pair { int a; int b; };\nint main() {\n  Pair p = {1};\n  return p.a + p.b;\n}\n")
+set(wpedantic_source "int main() {\n  int parts[0];\n  (void)parts;\n  return 0;\n}\n")
+set(wall_warning "unused-variable")
+set(wextra_warning "missing-field-initializers")
+set(wpedantic_warning "(pedantic|zero-length-array)")
+
+function(compile name result_var output_var)
+  file(WRITE ${WORK}/${name}.cpp "${${name}_source}")
+  execute_process(COMMAND ${COMPILER} ${flags} -c ${WORK}/${name}.cpp -o ${WORK}/${name}.o
+                  RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(${result_var} ${result} PARENT_SCOPE)
+  set(${output_var} "${out}${err}" PARENT_SCOPE)
+endfunction()
+
+compile(clean result output)
+if(NOT result EQUAL 0 OR output MATCHES "warning")
+  message(FATAL_ERROR "a clean file did not compile cleanly with ${COMPILER} ${flags}:\n${output}")
+endif()
+message(STATUS "clean file: compiles without a word")
+set(failures "")
+foreach(name wall wextra wpedantic)
+  compile(${name} result output)
+  if(NOT output MATCHES "${${name}_warning}")
+    string(APPEND failures "${name}: no ${${name}_warning} diagnostic:\n${output}\n")
+  elseif(WERROR AND result EQUAL 0)
+    string(APPEND failures "${name}: the compiler succeeded despite -Werror:\n${output}\n")
+  elseif(NOT WERROR AND NOT result EQUAL 0)
+    string(APPEND failures "${name}: the compiler failed without -Werror:\n${output}\n")
+  else()
+    message(STATUS "${name}: ${${name}_warning} reported, compiler exit ${result}")
+  endif()
+endforeach()
+if(failures)
+  message(FATAL_ERROR "${failures}")
+endif()
