@@ -19,12 +19,7 @@ namespace pmdplan::python {
 namespace {
 
 /// Whose defaults a planner of the roster starts from (plan()'s message for an unknown one).
-HandSamplingMode modeFrom(const std::string& planner) {
-  const PlannerEntry* entry = findPlanner(planner);
-  if (!entry)
-    throw InputError("", "planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
-  return entry->mode;
-}
+HandSamplingMode modeFrom(const std::string& planner) { return plannerNamed(planner, "planner").mode; }
 
 std::string typeNameOf(py::handle value) { return py::str(py::type::of(value).attr("__name__")).cast<std::string>(); }
 

@@ -76,9 +76,7 @@ std::shared_ptr<PyCollisionChecker> checkerFor(const PyTask& task, py::handle ch
 PyPlanResult plan(const PyTask& task, const std::string& planner, py::handle settings, py::handle checker,
                   py::handle synergies, std::optional<std::uint64_t> seed, std::optional<double> timeLimit,
                   double toleranceMm) {
-  const PlannerEntry* entry = findPlanner(planner);
-  if (!entry)
-    throw InputError("", "planner", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
+  const PlannerEntry* entry = &plannerNamed(planner, "planner");
   auto checking = checkerFor(task, checker, toleranceMm);
   PythonInterrupt interrupt;  // Ctrl-C ends the run as its time limit would, then raises KeyboardInterrupt
   std::optional<PySynergyModel> model;

@@ -23,8 +23,7 @@ void checkBenchOptions(const BenchSettings& o) {
     throw InputError("", "--planners", "no planner given; expected a comma-separated list of " + knownPlannerNames());
   seen.clear();
   for (const auto& planner : o.planners) {
-    if (!findPlanner(planner))
-      throw InputError("", "--planners", "'" + planner + "' is not a planner; known planners: " + knownPlannerNames());
+    plannerNamed(planner, "--planners");
     if (!seen.insert(planner).second) throw InputError("", "--planners", "planner '" + planner + "' is given twice");
   }
   if (o.runs < 1) throw InputError("", "--runs", "expected a whole number of runs >= 1, got " + std::to_string(o.runs));

@@ -49,10 +49,7 @@ std::map<std::size_t, RunRecord> runCampaignJobs(const BenchSettings& options, C
   const std::vector<CampaignJob> jobs = campaignJobs(options);
   std::vector<PlannerEntry> planners;
   for (const auto& name : options.planners) {
-    const auto entry = findPlanner(name);
-    if (!entry)
-      throw InputError("", "--planners", "'" + name + "' is not a planner; known planners: " + knownPlannerNames());
-    planners.push_back(*entry);
+    planners.push_back(plannerNamed(name, "--planners"));
   }
   if (!options.paths.empty()) createOutputFolder(options.paths, "--paths");
   std::map<std::size_t, RunRecord> records;

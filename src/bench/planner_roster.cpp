@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "pmdplan/bench/ompl_planner.hpp"
+#include "pmdplan/core/input_error.hpp"
 
 namespace pmdplan {
 
@@ -18,5 +19,10 @@ const PlannerRegistry& plannerRoster() {
 const PlannerEntry* findPlanner(const std::string& name) { return plannerRoster().find(name); }
 
 std::string knownPlannerNames() { return plannerRoster().names(); }
+
+const PlannerEntry& plannerNamed(const std::string& name, const std::string& field) {
+  if (const PlannerEntry* entry = findPlanner(name)) return *entry;
+  throw InputError("", field, "'" + name + "' is not a planner; known planners: " + knownPlannerNames());
+}
 
 }  // namespace pmdplan

@@ -16,5 +16,8 @@ const PlannerRegistry& plannerRoster();
 const PlannerEntry* findPlanner(const std::string& name);
 /// "pmd, full, pmd-lazy, pmd-connect, ompl:RRTConnect, ..." for messages.
 std::string knownPlannerNames();
+/// The entry of a name, or InputError (no file, the given field: "--planner" on the command line,
+/// "planner" in Python) naming the known planners.
+const PlannerEntry& plannerNamed(const std::string& name, const std::string& field);
 
 }  // namespace pmdplan
