@@ -7,7 +7,7 @@
 #include "pmdplan/collision/grasp_rule.hpp"
 #include "pmdplan/core/atomic_file.hpp"
 #include "pmdplan/core/input_error.hpp"
-#include "pmdplan/io/files/path_validation_json.hpp"
+#include "pmdplan/io/files/path_file_validation.hpp"
 #include "pmdplan/io/files/statistics_json.hpp"
 #include "pmdplan/io/viewer/path_robot_match.hpp"
 #include "pmdplan/io/viewer/robot_mimic.hpp"
@@ -227,10 +227,7 @@ ViewerPath viewerPath(const Task& task, const PathFile& path, const std::filesys
       colliding.push_back(state.collidingLinks);
       contact.push_back(state.contactLinks);
     }
-    ExactCollisionChecker checker(task);
-    const SegmentChecker segments(checker, robot, parameters.toleranceMm / 1000.0);
-    validation = pathValidationJson(GraspRule(task).validatePath(checker, segments, waypoints, phases), phases,
-                                    parameters.toleranceMm);
+    validation = pathJudgementJson(validateTaskPath(task, waypoints, phases, parameters.toleranceMm));
   } catch (const InputError& error) {
     // Geometry the checker cannot load (an empty mesh, ...): the page still shows the path.
     clearance = colliding = contact = validation = Json();
